@@ -1,0 +1,278 @@
+"""The ROS face of the simulator: topics, services, parameters and the tick.
+
+Private parameters (all optional):
+    ~background_r, ~background_g, ~background_b (int 0-255, default 69, 86, 255):
+        canvas colour; set to the defaults at start if absent, re-read by
+        `clear` and `reset`, as the real turtlesim does.
+    ~canvas_png (str, default ''): where the picture is saved. If set, it is
+        saved there when the node shuts down; `~save_canvas` saves there too
+        (or to $ROS_HOME/turtlesim_canvas.png when unset).
+
+Rospy runs callbacks on its own threads; every one of them takes `_lock`, and
+so does the 16 ms tick on the Qt thread, so the world changes only between
+ticks, as in the real node.
+"""
+import math
+import os
+import sys
+import threading
+import time
+
+import rospy
+from geometry_msgs.msg import Twist
+from std_srvs.srv import Empty, EmptyResponse, Trigger, TriggerResponse
+from turtlesim.msg import Color, Pose
+from turtlesim.srv import (Kill, KillResponse, SetPen, SetPenResponse, Spawn, SpawnResponse,
+                           TeleportAbsolute, TeleportAbsoluteResponse, TeleportRelative,
+                           TeleportRelativeResponse)
+
+from .world import CENTRE, DEFAULT_BACKGROUND, TICK_SECONDS, RequestError, World
+
+TICK_MS = int(TICK_SECONDS * 1000)
+
+
+class TurtleEndpoints:
+    """The topics and services of one turtle, named under its own namespace."""
+
+    def __init__(self, node, name):
+        self.pose = rospy.Publisher(f'{name}/pose', Pose, queue_size=1)
+        self.colour = rospy.Publisher(f'{name}/color_sensor', Color, queue_size=1)
+        self.topics = [
+            self.pose, self.colour,
+            rospy.Subscriber(f'{name}/cmd_vel', Twist, node.on_cmd_vel, name,
+                             queue_size=1, tcp_nodelay=True),
+        ]
+        self.services = [
+            rospy.Service(f'{name}/set_pen', SetPen, lambda r: node.on_set_pen(name, r)),
+            rospy.Service(f'{name}/teleport_absolute', TeleportAbsolute,
+                          lambda r: node.on_teleport_absolute(name, r)),
+            rospy.Service(f'{name}/teleport_relative', TeleportRelative,
+                          lambda r: node.on_teleport_relative(name, r)),
+        ]
+
+    def close(self):
+        for topic in self.topics:
+            topic.unregister()
+        for service in self.services:
+            service.shutdown()
+
+
+class TurtlesimNode:
+    def __init__(self, canvas_factory):
+        self._lock = threading.Lock()
+        self._world = World()
+        self._endpoints = {}
+        self.changed = True   # the picture differs from the last one shown
+        rospy.loginfo('Starting turtlesim with node name %s', rospy.get_name())
+        self._canvas = canvas_factory(self._background())
+        rospy.Service('clear', Empty, self.on_clear)
+        rospy.Service('reset', Empty, self.on_reset)
+        rospy.Service('spawn', Spawn, self.on_spawn)
+        rospy.Service('kill', Kill, self.on_kill)
+        rospy.Service('~save_canvas', Trigger, self.on_save_canvas)
+        with self._lock:
+            self._spawn(CENTRE, CENTRE, 0.0, '')
+
+    # -- parameters ------------------------------------------------------
+    def _background(self):
+        colour = []
+        for channel, default in zip('rgb', DEFAULT_BACKGROUND):
+            name = f'~background_{channel}'
+            if not rospy.has_param(name):
+                rospy.set_param(name, default)
+            value = rospy.get_param(name)
+            if not isinstance(value, int) or isinstance(value, bool) or not 0 <= value <= 255:
+                rospy.logwarn('%s is %r; it must be an integer 0-255, using %d',
+                              rospy.resolve_name(name), value, default)
+                value = default
+            colour.append(value)
+        return tuple(colour)
+
+    def canvas_path(self):
+        path = rospy.get_param('~canvas_png', '')
+        return os.path.abspath(os.path.expanduser(path)) if path else ''
+
+    # -- the tick ----------------------------------------------------------
+    def tick(self):
+        with self._lock:
+            now = time.monotonic()
+            for name, turtle in self._world.turtles.items():
+                segments, clamped_from = turtle.step(now)
+                if clamped_from:
+                    rospy.logwarn('Oh no! I hit the wall! (Clamping from [x=%f, y=%f])',
+                                  *clamped_from)
+                pose = Pose(turtle.x, turtle.y, turtle.theta, turtle.linear_speed, turtle.angular)
+                endpoints = self._endpoints[name]
+                endpoints.pose.publish(pose)
+                endpoints.colour.publish(Color(*self._canvas.colour_at(turtle.x, turtle.y)))
+                if segments:
+                    self._canvas.draw(segments)
+                    self.changed = True
+                if turtle.linear_speed or turtle.angular:
+                    self.changed = True
+
+    def frame(self):
+        with self._lock:
+            self.changed = False
+            return self._canvas.frame(list(self._world.turtles.values()))
+
+    def save(self, path):
+        with self._lock:
+            return self._canvas.save(path, list(self._world.turtles.values()))
+
+    # -- callbacks -----------------------------------------------------------
+    def on_cmd_vel(self, msg, name):
+        with self._lock:
+            turtle = self._world.get(name)
+            if turtle is None:
+                return
+            try:
+                turtle.command(msg.linear.x, msg.linear.y, msg.angular.z, time.monotonic())
+            except RequestError as e:
+                rospy.logwarn_throttle(1.0, '%s/cmd_vel: %s; the command is ignored', name, e)
+
+    def _refuse(self, what, error):
+        rospy.logerr('%s: %s', what, error)
+        raise rospy.ServiceException(str(error))
+
+    def _turtle_call(self, name, what, action):
+        with self._lock:
+            turtle = self._world.get(name)
+            if turtle is None:
+                self._refuse(what, RequestError(f'no turtle named [{name}]'))
+            try:
+                action(turtle)
+            except RequestError as e:
+                rospy.logwarn('%s/%s: %s; nothing changed', name, what, e)
+                raise rospy.ServiceException(str(e))
+            self.changed = True
+
+    def on_set_pen(self, name, req):
+        self._turtle_call(name, 'set_pen',
+                          lambda t: t.set_pen(req.r, req.g, req.b, req.width, req.off))
+        return SetPenResponse()
+
+    def on_teleport_absolute(self, name, req):
+        self._turtle_call(name, 'teleport_absolute',
+                          lambda t: t.teleport_absolute(req.x, req.y, req.theta))
+        return TeleportAbsoluteResponse()
+
+    def on_teleport_relative(self, name, req):
+        self._turtle_call(name, 'teleport_relative',
+                          lambda t: t.teleport_relative(req.linear, req.angular))
+        return TeleportRelativeResponse()
+
+    def _spawn(self, x, y, theta, name):
+        turtle = self._world.spawn(x, y, theta, name)
+        self._endpoints[turtle.name] = TurtleEndpoints(self, turtle.name)
+        rospy.loginfo('Spawning turtle [%s] at x=[%f], y=[%f], theta=[%f]',
+                      turtle.name, x, y, theta)
+        self.changed = True
+        return turtle.name
+
+    def on_spawn(self, req):
+        with self._lock:
+            try:
+                return SpawnResponse(self._spawn(req.x, req.y, req.theta, req.name))
+            except RequestError as e:
+                self._refuse('spawn', e)
+
+    def on_kill(self, req):
+        with self._lock:
+            try:
+                self._world.kill(req.name)
+            except RequestError as e:
+                self._refuse('kill', e)
+            self._endpoints.pop(req.name).close()
+            self.changed = True
+        return KillResponse()
+
+    def on_clear(self, _req):
+        rospy.loginfo('Clearing turtlesim.')
+        background = self._background()
+        with self._lock:
+            self._canvas.clear(background)
+            self.changed = True
+        return EmptyResponse()
+
+    def on_reset(self, _req):
+        rospy.loginfo('Resetting turtlesim.')
+        background = self._background()
+        with self._lock:
+            for endpoints in self._endpoints.values():
+                endpoints.close()
+            self._endpoints.clear()
+            self._world = World()
+            self._canvas.clear(background)
+            self._spawn(CENTRE, CENTRE, 0.0, '')
+        return EmptyResponse()
+
+    def on_save_canvas(self, _req):
+        path = self.canvas_path() or os.path.join(
+            os.environ.get('ROS_HOME', os.path.expanduser('~/.ros')), 'turtlesim_canvas.png')
+        if self.save(path):
+            rospy.loginfo('Saved the canvas to %s', path)
+            return TriggerResponse(True, path)
+        return TriggerResponse(False, f'could not write {path}')
+
+
+def _choose_platform(argv):
+    """Run headless when there is no display, instead of aborting like the real node."""
+    if '-platform' in argv or os.environ.get('QT_QPA_PLATFORM'):
+        return
+    if not (os.environ.get('DISPLAY') or os.environ.get('WAYLAND_DISPLAY')):
+        os.environ['QT_QPA_PLATFORM'] = 'offscreen'
+
+
+def main():
+    argv = rospy.myargv(sys.argv)
+    _choose_platform(argv)
+    # Imported here, after the platform is chosen.
+    from PyQt5.QtCore import Qt, QTimer
+    from PyQt5.QtGui import QGuiApplication, QPainter
+    from PyQt5.QtWidgets import QApplication, QWidget
+    from .canvas import Canvas
+
+    app = QApplication(argv)
+    rospy.init_node('turtlesim')
+    node = TurtlesimNode(Canvas)
+    headless = QGuiApplication.platformName() in ('offscreen', 'minimal')
+
+    window = None
+    if not headless:
+        class Window(QWidget):
+            def paintEvent(self, _event):
+                painter = QPainter(self)
+                painter.drawImage(0, 0, node.frame())
+                painter.end()
+        window = Window()
+        window.setWindowTitle('TurtleSim')
+        window.setFixedSize(500, 500)
+        window.show()
+    else:
+        rospy.loginfo('No display: running headless (Qt platform %s)',
+                      QGuiApplication.platformName())
+
+    def on_tick():
+        if rospy.is_shutdown():
+            app.quit()
+            return
+        node.tick()
+        if window is not None and node.changed:
+            window.update()
+
+    timer = QTimer()
+    timer.setTimerType(Qt.PreciseTimer)
+    timer.timeout.connect(on_tick)
+    timer.start(TICK_MS)
+    app.lastWindowClosed.connect(lambda: rospy.signal_shutdown('window closed'))
+    app.exec_()
+    timer.stop()
+
+    path = node.canvas_path()
+    if path:
+        if node.save(path):
+            rospy.loginfo('Saved the canvas to %s', path)
+            print(f'turtlesim: picture saved to {path}', flush=True)
+        else:
+            rospy.logerr('Could not save the canvas to %s', path)

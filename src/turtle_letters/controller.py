@@ -1,0 +1,287 @@
+"""The turtle controller node: draws letters when it hears the trigger.
+
+Pose messages are the clock: turtlesim publishes one per 16 ms tick, and the
+drawing thread sends one command per pose it receives, so cmd_vel goes out at
+the simulator's own 62.5 Hz and nothing ever waits in a loop of its own.
+"""
+import math
+import queue
+import threading
+
+import rospy
+from geometry_msgs.msg import Twist
+from std_msgs.msg import String
+from std_srvs.srv import Empty
+from turtlesim.msg import Pose as PoseMsg
+from turtlesim.srv import SetPen
+
+from .font import FONT
+from .motion import EXECUTORS, STOP, PoseSample
+from .plan import TURN_DIRECTIONS, DoesNotFit, Layout, Line, Pen, Pose, Turn, glyph_for, plan_glyph, wrap
+
+DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own default pen
+POSE_TIMEOUT = 1.0                  # s without a pose: the simulator is gone
+
+
+class ParameterError(ValueError):
+    pass
+
+
+class Settings:
+    """The node's private parameters, read and checked in one place.
+
+    ~trigger (str, default "P"): the /chatter message that starts a drawing.
+    ~letter (str, default "N"): the character drawn on a trigger (A-Z, 0-9).
+    ~size (float, default 3.0, m): letter height; the lab's N is 3.0 m.
+    ~mode (str, default "timed"): "timed" (the lab's open-loop primitives,
+        timed on the simulator's clock) or "feedback" (closed loop on the pose).
+    ~linear_speed (float, default 1.0, m/s), ~angular_speed (float, default
+        0.25, rad/s): the lab's speeds; in feedback mode, the caps.
+    ~turn_direction (str, default "ccw"): "ccw" turns counter-clockwise only,
+        as the lab does; "shortest" turns whichever way is shorter.
+    ~typing (bool, default false): draw every letter or digit heard on
+        /chatter, like a typewriter, instead of ~letter on ~trigger.
+    ~text (str, default ""): if set, drawn once as soon as the turtle's pose
+        is known.
+    """
+
+    def __init__(self, get=rospy.get_param):
+        self.trigger = self._string(get, '~trigger', 'P')
+        self.letter = self._string(get, '~letter', 'N').upper()
+        self.size = self._positive(get, '~size', 3.0, 'm')
+        self.mode = self._choice(get, '~mode', 'timed', tuple(EXECUTORS))
+        self.linear_speed = self._positive(get, '~linear_speed', 1.0, 'm/s')
+        self.angular_speed = self._positive(get, '~angular_speed', 0.25, 'rad/s')
+        self.turn_direction = self._choice(get, '~turn_direction', 'ccw', TURN_DIRECTIONS)
+        self.typing = get('~typing', False)
+        self.text = self._string(get, '~text', '').upper()
+        if not isinstance(self.typing, bool):
+            raise ParameterError(f'~typing is {self.typing!r}; allowed: true or false')
+        if glyph_for(self.letter) is None or len(self.letter) != 1:
+            raise ParameterError(
+                f'~letter is {self.letter!r}; allowed: one of {"".join(sorted(FONT))}')
+        bad = sorted({c for c in self.text if c != ' ' and glyph_for(c) is None})
+        if bad:
+            raise ParameterError(f'~text has characters with no glyph {bad}; allowed: A-Z, 0-9, space')
+
+    @staticmethod
+    def _string(get, name, default):
+        value = get(name, default)
+        if not isinstance(value, str):
+            raise ParameterError(f'{name} is {value!r}; allowed: a string')
+        return value
+
+    @staticmethod
+    def _positive(get, name, default, unit):
+        value = get(name, default)
+        if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                or not math.isfinite(value) or value <= 0:
+            raise ParameterError(f'{name} is {value!r}; allowed: a number > 0 ({unit})')
+        return float(value)
+
+    @staticmethod
+    def _choice(get, name, default, allowed):
+        value = get(name, default)
+        if value not in allowed:
+            raise ParameterError(f'{name} is {value!r}; allowed: {", ".join(allowed)}')
+        return value
+
+
+class DrawingAborted(RuntimeError):
+    pass
+
+
+class TurtleController:
+    """Subscribes `chatter` and `turtle1/pose`; publishes `turtle1/cmd_vel`;
+    calls `turtle1/set_pen` and `clear`. Subscribes `~text` (std_msgs/String):
+    a word to draw. Parameters: see Settings."""
+
+    def __init__(self, settings: Settings):
+        self.settings = settings
+        self._poses = queue.Queue()
+        self._latest_pose = None
+        self._jobs = queue.Queue()
+        self._busy = threading.Event()        # set from request until the drawing ends
+        self._request_lock = threading.Lock()
+        self._layout = None
+        self._pen_known_down = True
+        self._cmd_vel = rospy.Publisher('turtle1/cmd_vel', Twist, queue_size=10)
+        self._set_pen = rospy.ServiceProxy('turtle1/set_pen', SetPen)
+        self._clear = rospy.ServiceProxy('clear', Empty)
+        rospy.Subscriber('turtle1/pose', PoseMsg, self._on_pose, queue_size=100, tcp_nodelay=True)
+        rospy.Subscriber('chatter', String, self._on_chatter, queue_size=10)
+        rospy.Subscriber('~text', String, self._on_text, queue_size=10)
+        rospy.on_shutdown(self.stop)
+        self._worker = threading.Thread(target=self._work, name='drawing', daemon=True)
+        self._worker.start()
+        if settings.text:
+            self.request(settings.text, 'the ~text parameter')
+
+    # -- inputs ----------------------------------------------------------------
+    def _on_pose(self, msg):
+        sample = PoseSample(msg.x, msg.y, msg.theta, msg.linear_velocity, msg.angular_velocity)
+        self._latest_pose = sample
+        self._poses.put(sample)
+
+    def _on_chatter(self, msg):
+        data = msg.data
+        shown = repr(data if len(data) <= 40 else data[:40] + '...')
+        if self.settings.typing:
+            if len(data) == 1 and glyph_for(data) is not None:
+                self.request(data.upper(), 'a key')
+            elif data == ' ':
+                self.request(' ', 'a key')
+            else:
+                rospy.loginfo('chatter %s ignored: typing mode draws single letters or digits', shown)
+        elif data == self.settings.trigger:
+            self.request(self.settings.letter, f'trigger {shown}')
+        else:
+            rospy.loginfo('chatter %s ignored: the trigger is %r', shown, self.settings.trigger)
+
+    def _on_text(self, msg):
+        text = msg.data.upper()
+        bad = sorted({c for c in text if c != ' ' and glyph_for(c) is None})
+        if not text.strip() or bad:
+            rospy.logwarn('~text %r refused: only A-Z, 0-9 and spaces can be drawn', msg.data[:40])
+            return
+        self.request(text, '~text')
+
+    def request(self, text, source):
+        """Draw `text` unless a drawing is under way (then it is ignored, not queued)."""
+        with self._request_lock:
+            if self._busy.is_set():
+                rospy.loginfo('%s ignored: a drawing is under way', source)
+                return
+            self._busy.set()
+        self._jobs.put(text)
+
+    # -- primitives ------------------------------------------------------------------
+    def rotate(self, degrees):
+        """Turn in place by `degrees` (counter-clockwise positive), timed."""
+        pose = self._wait_for_pose()
+        angle = math.radians(degrees)
+        self._run(Turn(angle, wrap(pose.theta + angle)), 'timed')
+
+    def move(self, meters):
+        """Drive `meters` straight ahead, timed."""
+        pose = self._wait_for_pose()
+        self._run(Line(meters, pose.x + meters * math.cos(pose.theta),
+                       pose.y + meters * math.sin(pose.theta), pose.theta), 'timed')
+
+    def _run(self, primitive, mode):
+        s = self.settings
+        executor = EXECUTORS[mode](primitive, s.linear_speed, s.angular_speed)
+        rospy.loginfo('%s: start at %s', _describe(primitive), _pose_text(self._latest_pose))
+        command = executor.start()
+        while command is not None:
+            self._publish(command)
+            command = executor.update(self._next_pose())
+        self._publish(STOP)
+        rospy.loginfo('%s: end at %s', _describe(primitive), _pose_text(self._latest_pose))
+
+    def _next_pose(self):
+        try:
+            pose = self._poses.get(timeout=POSE_TIMEOUT)
+        except queue.Empty:
+            raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s') from None
+        if rospy.is_shutdown():
+            raise DrawingAborted('shutting down')
+        return pose
+
+    def _publish(self, command):
+        twist = Twist()
+        twist.linear.x, twist.linear.y, twist.angular.z = command
+        self._cmd_vel.publish(twist)
+
+    def stop(self):
+        """Stop the turtle now rather than let it coast for turtlesim's 1 s timeout."""
+        self._publish(STOP)
+
+    def _pen(self, down):
+        self._set_pen(*DEFAULT_PEN, 0 if down else 1)
+        self._pen_known_down = down
+
+    # -- drawing ---------------------------------------------------------------------
+    def _wait_for_pose(self):
+        if self._latest_pose is None:
+            rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when it comes',
+                          rospy.resolve_name('turtle1/pose'))
+        while self._latest_pose is None and not rospy.is_shutdown():
+            try:
+                self._poses.get(timeout=0.5)
+            except queue.Empty:
+                pass
+        if self._latest_pose is None:
+            raise DrawingAborted('shutting down')
+        return self._latest_pose
+
+    def _work(self):
+        while not rospy.is_shutdown():
+            try:
+                text = self._jobs.get(timeout=0.5)
+            except queue.Empty:
+                continue
+            try:
+                self.draw(text)
+            except DrawingAborted as e:
+                self.stop()
+                rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text, e)
+            except DoesNotFit as e:
+                rospy.logerr('Refused: %s', e)
+            except rospy.ServiceException as e:
+                self.stop()
+                rospy.logerr('Drawing of %r stopped: a turtlesim service failed: %s', text, e)
+            finally:
+                self._busy.clear()
+
+    def draw(self, text):
+        """Draw `text` at the next free places on the canvas."""
+        s = self.settings
+        pose = self._wait_for_pose()
+        if self._layout is None:
+            self._layout = Layout((pose.x, pose.y), s.size)
+        places, must_clear = self._layout.reserve(text)
+        while not self._poses.empty():        # poses from before the trigger are stale
+            self._poses.get_nowait()
+        if must_clear:
+            rospy.loginfo('The canvas is full: clearing it and starting again at the first place')
+            self._clear()
+        if not self._pen_known_down:
+            self._pen(True)
+        rospy.loginfo('Drawing %r (%s mode)', text, s.mode)
+        start = Pose(pose.x, pose.y, pose.theta)
+        for char, place in zip(text, places):
+            if place is None:
+                continue
+            primitives, start = plan_glyph(glyph_for(char), place, s.size, start, s.turn_direction)
+            for primitive in primitives:
+                if isinstance(primitive, Pen):
+                    self._pen(primitive.down)
+                else:
+                    self._run(primitive, s.mode)
+        rospy.loginfo('Done drawing %r; the turtle is at %s', text, _pose_text(self._latest_pose))
+
+
+def _describe(primitive):
+    if isinstance(primitive, Turn):
+        return f'rotate {math.degrees(primitive.angle):.1f} deg'
+    return f'move {primitive.length:.3f} m'
+
+
+def _pose_text(pose):
+    if pose is None:
+        return '(no pose)'
+    return f'x={pose.x:.4f} y={pose.y:.4f} theta={pose.theta:.4f}'
+
+
+def main():
+    rospy.init_node('turtlebot_controller')
+    try:
+        settings = Settings()
+    except ParameterError as e:
+        rospy.logfatal('%s: %s', rospy.get_name(), e)
+        raise SystemExit(2)
+    TurtleController(settings)
+    rospy.loginfo('Ready: publish %r on %s to draw %r (%s mode)', settings.trigger,
+                  rospy.resolve_name('chatter'), settings.letter, settings.mode)
+    rospy.spin()

@@ -1,0 +1,155 @@
+"""From letters to motion primitives, and where on the canvas letters go.
+
+No ROS here. A drawing is a list of primitives: Turn (in place), Line
+(straight ahead) and Pen (up or down). Each carries both the relative amount
+(what the lab's timed primitives use) and the absolute target in the world
+(what feedback mode steers to).
+"""
+import math
+from typing import List, NamedTuple, Optional, Tuple
+
+from .font import ASCENT, FONT, LETTER_SPACING, LINE_HEIGHT, SPACE_WIDTH, Glyph
+
+WORLD_SIZE = 499 / 45.0     # turtlesim's usable canvas, meters
+MARGIN = 0.5                # no stroke comes closer than this to a wall
+TURN_DIRECTIONS = ('ccw', 'shortest')
+
+
+class Turn(NamedTuple):
+    angle: float            # radians, counter-clockwise positive
+    heading: float          # the heading it ends at
+
+
+class Line(NamedTuple):
+    length: float           # meters, forward
+    x: float                # where it ends
+    y: float
+    heading: float          # the heading it is driven at
+
+
+class Pen(NamedTuple):
+    down: bool
+
+
+class Pose(NamedTuple):
+    x: float
+    y: float
+    heading: float
+
+
+class DoesNotFit(ValueError):
+    """The request would take the turtle outside the canvas' margins."""
+
+
+def wrap(angle: float) -> float:
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def turn_between(heading: float, target: float, direction: str) -> float:
+    """The turn from one heading to another: always counter-clockwise (the
+    lab's way, 0 to 2 pi) or the shorter way (-pi to pi)."""
+    if direction == 'ccw':
+        angle = (target - heading) % (2.0 * math.pi)
+        return 0.0 if math.isclose(angle, 2.0 * math.pi, abs_tol=1e-9) else angle
+    return wrap(target - heading)
+
+
+def path(points: List[Tuple[float, float]], start: Pose, direction: str):
+    """Primitives that drive from `start` through `points`; returns them and the end pose."""
+    primitives = []
+    x, y, heading = start
+    for px, py in points:
+        length = math.hypot(px - x, py - y)
+        if length < 1e-9:
+            continue
+        target = math.atan2(py - y, px - x)
+        angle = turn_between(heading, target, direction)
+        if abs(angle) > 1e-9:
+            primitives.append(Turn(angle, target))
+        heading = target
+        primitives.append(Line(length, px, py, heading))
+        x, y = px, py
+    return primitives, Pose(x, y, heading)
+
+
+def glyph_strokes(glyph: Glyph, origin: Tuple[float, float], size: float):
+    """The glyph's strokes in world meters, its bottom-left corner at `origin`."""
+    ox, oy = origin
+    return [[(ox + size * gx, oy + size * gy) for gx, gy in stroke] for stroke in glyph.strokes]
+
+
+def plan_glyph(glyph: Glyph, origin: Tuple[float, float], size: float, start: Pose,
+               direction: str = 'ccw'):
+    """Primitives that draw `glyph`, starting from the turtle's `start` pose.
+
+    The pen is lifted only to travel to a stroke that does not start where
+    the turtle is, so the lab's N from its start point is exactly the lab's
+    six primitives.
+    """
+    primitives = []
+    pose = start
+    for stroke in glyph_strokes(glyph, origin, size):
+        if math.hypot(stroke[0][0] - pose.x, stroke[0][1] - pose.y) > 1e-9:
+            travel, pose = path(stroke[:1], pose, direction)
+            primitives += [Pen(False)] + travel + [Pen(True)]
+        drawn, pose = path(stroke[1:], pose, direction)
+        primitives += drawn
+    return primitives, pose
+
+
+def glyph_for(char: str) -> Optional[Glyph]:
+    return FONT.get(char.upper())
+
+
+class Layout:
+    """Letter places on the canvas, like a typewriter: the first at
+    `first_place`, then to the right, then a new line below at the left
+    margin; when the canvas is full, it is cleared and we start again."""
+
+    def __init__(self, first_place: Tuple[float, float], size: float) -> None:
+        self.first_place = first_place
+        self.size = size
+        self.cursor = first_place
+
+    def fits_at(self, x: float, y: float, width: float) -> bool:
+        high = WORLD_SIZE - MARGIN
+        return (MARGIN <= x and x + width * self.size <= high
+                and MARGIN <= y and y + ASCENT * self.size <= high)
+
+    def first_place_fits(self) -> bool:
+        return self.fits_at(*self.first_place, 0.0)
+
+    def places(self, widths: List[float], cursor: Tuple[float, float]):
+        """Where boxes of these widths go from `cursor`, or None once the canvas is full."""
+        x, y = cursor
+        placed = []
+        for width in widths:
+            if not self.fits_at(x, y, width):
+                x, y = MARGIN, y - LINE_HEIGHT * self.size
+                if not self.fits_at(x, y, width):
+                    return None, cursor
+            placed.append((x, y))
+            x += (width + LETTER_SPACING) * self.size
+        return placed, (x, y)
+
+    def how_many_fit(self, widths: List[float]) -> int:
+        for n in range(len(widths), 0, -1):
+            if self.places(widths[:n], self.first_place)[0] is not None:
+                return n
+        return 0
+
+    def reserve(self, text: str):
+        """Places for every character of `text` (None for a space) and
+        whether the canvas must be cleared first; raises DoesNotFit."""
+        widths = [SPACE_WIDTH if c == ' ' else glyph_for(c).width for c in text]
+        placed, cursor = self.places(widths, self.cursor)
+        cleared = False
+        if placed is None:
+            placed, cursor = self.places(widths, self.first_place)
+            cleared = True
+            if placed is None:
+                raise DoesNotFit(
+                    f'"{text}" does not fit on the canvas at size {self.size:g} m: '
+                    f'at most {self.how_many_fit(widths)} of its {len(text)} characters fit')
+        self.cursor = cursor
+        return [None if c == ' ' else p for c, p in zip(text, placed)], cleared

@@ -1,0 +1,107 @@
+"""The executors in closed loop with the simulator's own step function."""
+import math
+import struct
+
+import pytest
+
+from turtle_letters.font import FONT, LAB_N
+from turtle_letters.motion import EXECUTORS, PoseSample
+from turtle_letters.plan import Line, Pose, Turn, plan_glyph
+from turtlesim_compat.world import CENTRE, Turtle
+
+
+def f32(value):
+    """Pose fields travel as float32."""
+    return struct.unpack('f', struct.pack('f', value))[0]
+
+
+def run(primitives, mode, turtle, late_every=0, linear=1.0, angular=0.25):
+    """Drive `turtle` through `primitives`; every `late_every`-th command misses
+    its tick (the simulator applies the previous one once more). Returns the
+    turtle's position at every tick."""
+    track = []
+    tick = 0
+    for primitive in primitives:
+        executor = EXECUTORS[mode](primitive, linear, angular)
+        command = executor.start()
+        while command is not None:
+            tick += 1
+            late = late_every and tick % late_every == 0
+            if not late:
+                turtle.command(*command, now=tick)
+            turtle.step(now=tick)
+            if late:
+                turtle.command(*command, now=tick)
+            track.append((turtle.x, turtle.y))
+            command = executor.update(PoseSample(
+                f32(turtle.x), f32(turtle.y), f32(turtle.theta),
+                f32(turtle.linear_speed), f32(turtle.angular)))
+            assert tick < 100000, 'the primitive never ended'
+        turtle.command(0.0, 0.0, 0.0, now=tick)
+        turtle.step(now=tick)
+    return track
+
+
+def n_at_centre():
+    return plan_glyph(LAB_N, (CENTRE, CENTRE), 3.0, Pose(CENTRE, CENTRE, 0.0))[0]
+
+
+@pytest.mark.parametrize('mode', ['timed', 'feedback'])
+def test_the_n_ends_on_its_last_vertex(mode):
+    turtle = Turtle('t', CENTRE, CENTRE, 0.0)
+    primitives = n_at_centre()
+    run(primitives, mode, turtle)
+    assert (primitives[-1].x, primitives[-1].y) == pytest.approx((8.0193, 9.0696), abs=1e-4)
+    assert (turtle.x, turtle.y) == pytest.approx((primitives[-1].x, primitives[-1].y), abs=1e-4)
+    assert turtle.theta == pytest.approx(math.pi / 2, abs=1e-4)
+
+
+def test_timed_primitives_last_amount_over_speed_of_simulated_time():
+    turtle = Turtle('t', CENTRE, CENTRE, 0.0)
+    ticks = len(run([Turn(math.pi / 2, math.pi / 2)], 'timed', turtle))
+    assert ticks == math.ceil((math.pi / 2) / 0.25 / 0.016)
+    ticks = len(run([Line(3.0, CENTRE, CENTRE + 3.0, math.pi / 2)], 'timed', turtle))
+    assert ticks == math.ceil(3.0 / 0.016)
+    assert turtle.y == pytest.approx(CENTRE + 3.0, abs=1e-9)
+
+
+def test_the_whole_lab_n_takes_the_labs_time_in_simulated_seconds():
+    turtle = Turtle('t', CENTRE, CENTRE, 0.0)
+    seconds = len(run(n_at_centre(), 'timed', turtle)) * 0.016
+    assert seconds == pytest.approx(40.9, abs=0.15)
+
+
+@pytest.mark.parametrize('char', ['N', 'A', 'K', 'S', '8'])
+def test_feedback_reaches_every_vertex_within_a_millimetre_despite_late_commands(char):
+    glyph = FONT[char]
+    origin = (3.0, 3.0)
+    first = glyph.strokes[0][0]
+    turtle = Turtle('t', origin[0] + 3 * first[0], origin[1] + 3 * first[1], 0.0)
+    for primitive in plan_glyph(glyph, origin, 3.0, Pose(turtle.x, turtle.y, 0.0), 'shortest')[0]:
+        if isinstance(primitive, Line):
+            start = (turtle.x, turtle.y)
+            track = run([primitive], 'feedback', turtle, late_every=5)
+            assert math.hypot(turtle.x - primitive.x, turtle.y - primitive.y) < 1e-3
+            # never past the vertex along the stroke, never off it sideways
+            ux, uy = math.cos(primitive.heading), math.sin(primitive.heading)
+            for x, y in track:
+                along = (x - start[0]) * ux + (y - start[1]) * uy
+                across = -(x - start[0]) * uy + (y - start[1]) * ux
+                assert along <= primitive.length + 1e-3 and abs(across) < 1e-3
+        elif isinstance(primitive, Turn):
+            run([primitive], 'feedback', turtle, late_every=5)
+            assert abs(math.remainder(turtle.theta - primitive.heading, 2 * math.pi)) < 1e-3
+
+
+def test_feedback_turns_the_long_way_when_the_plan_says_so():
+    turtle = Turtle('t', CENTRE, CENTRE, math.pi / 2)
+    angles = []
+    executor = EXECUTORS['feedback'](Turn(5 * math.pi / 4, -math.pi / 4), 1.0, 0.25)
+    command = executor.start()
+    while command is not None:
+        turtle.command(*command, now=0)
+        turtle.step(now=0)
+        angles.append(turtle.angular)
+        command = executor.update(PoseSample(turtle.x, turtle.y, turtle.theta, 0.0, turtle.angular))
+    assert min(angles) >= 0.0
+    assert turtle.theta == pytest.approx(-math.pi / 4, abs=1e-4)

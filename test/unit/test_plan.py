@@ -1,0 +1,60 @@
+"""Turns, travel with the pen up, and the typewriter layout."""
+import math
+
+import pytest
+
+from turtle_letters.font import FONT
+from turtle_letters.plan import (MARGIN, WORLD_SIZE, DoesNotFit, Layout, Line, Pen, Pose,
+                                 Turn, plan_glyph, turn_between)
+
+
+@pytest.mark.parametrize('start, target, ccw, shortest', [
+    (0, math.pi / 2, math.pi / 2, math.pi / 2),
+    (math.pi / 2, -math.pi / 4, 5 * math.pi / 4, -3 * math.pi / 4),
+    (1.0, 1.0, 0.0, 0.0),
+])
+def test_turns_counter_clockwise_or_the_short_way(start, target, ccw, shortest):
+    assert turn_between(start, target, 'ccw') == pytest.approx(ccw)
+    assert turn_between(start, target, 'shortest') == pytest.approx(shortest)
+
+
+def test_travel_to_a_letter_elsewhere_is_made_with_the_pen_up():
+    primitives, end = plan_glyph(FONT['L'], (1.0, 1.0), 2.0, Pose(5.0, 5.0, 0.0), 'shortest')
+    assert primitives[0] == Pen(False)
+    up_to = primitives.index(Pen(True))
+    travel = primitives[1:up_to]
+    assert isinstance(travel[-1], Line) and (travel[-1].x, travel[-1].y) == (1.0, 3.0)
+    assert all(isinstance(p, (Turn, Line)) for p in travel)
+    assert (end.x, end.y) == pytest.approx((2.2, 1.0))
+
+
+def test_places_go_right_then_a_line_below_then_start_again():
+    layout = Layout((5.544445, 5.544445), 3.0)
+    places = []
+    cleared = []
+    for _ in range(6):
+        (place,), was_cleared = layout.reserve('N')
+        places.append(place)
+        cleared.append(was_cleared)
+    assert places[0] == (5.544445, 5.544445)
+    assert places[1][0] == MARGIN and places[1][1] < places[0][1] - 3.525
+    assert places[2][1] == places[1][1] and places[2][0] > places[1][0]
+    first_again = cleared.index(True)
+    assert places[first_again] == places[0]
+    for x, y in places:     # every letter box clear of the walls
+        assert MARGIN <= x and x + FONT['N'].width * 3.0 <= WORLD_SIZE - MARGIN
+        assert MARGIN <= y and y + 3.525 <= WORLD_SIZE - MARGIN
+
+
+def test_text_that_cannot_fit_is_refused_saying_how_much_fits():
+    layout = Layout((5.544445, 5.544445), 3.0)
+    with pytest.raises(DoesNotFit, match=r'at most 6 of its 9 characters fit'):
+        layout.reserve('ABCDEFGHI')
+    assert layout.cursor == (5.544445, 5.544445)      # nothing reserved
+    places, _ = layout.reserve('AB D')
+    assert places[2] is None
+
+
+def test_a_letter_too_big_for_the_canvas_is_refused():
+    with pytest.raises(DoesNotFit, match='at most 0'):
+        Layout((1.0, 1.0), 9.0).reserve('N')

@@ -1,0 +1,55 @@
+#!/bin/bash
+# Install what the project needs, and nothing when all of it is present.
+set -eu
+source "$(dirname "$0")/env.sh"
+
+# Tools the tests and the headless run use, on every platform.
+COMMON="python3-pytest python3-pyqt5 tmux"
+if [ -d /opt/ros/noetic ]; then
+  # Ubuntu 20.04 with ROS Noetic: the real turtlesim.
+  WANT="$COMMON ros-noetic-ros-base ros-noetic-turtlesim ros-noetic-rostest ros-noetic-std-srvs
+        ros-noetic-geometry-msgs ros-noetic-message-generation ros-noetic-message-runtime"
+else
+  # Debian (12) or Ubuntu without /opt/ros: Debian's ROS 1 packages; the
+  # simulator comes bundled, since Debian has no turtlesim.
+  WANT="$COMMON ros-core-dev python3-rospy python3-rostest python3-roslaunch python3-rostopic
+        python3-rosservice rosout python3-std-msgs python3-std-srvs python3-geometry-msgs
+        ros-std-srvs libstd-srvs-dev"
+fi
+
+if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
+  echo "make deps: this is not a Debian or Ubuntu machine (no apt-get)." >&2
+  echo "  Install ROS 1 Noetic (rospy, roslaunch, rostest, catkin, std_msgs, std_srvs," >&2
+  echo "  geometry_msgs, message_generation, and turtlesim if available), PyQt5, pytest" >&2
+  echo "  and tmux yourself, then run 'make build'." >&2
+  exit 1
+fi
+
+missing=""
+for pkg in $WANT; do
+  status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
+  [ "$status" = "install ok installed" ] || missing="$missing $pkg"
+done
+
+if [ -z "$missing" ]; then
+  echo "make deps: everything needed is installed."
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" != 0 ]; then
+  if command -v sudo >/dev/null; then SUDO=sudo; else
+    echo "make deps: missing packages:$missing" >&2
+    echo "  Not root and no sudo: install them as root with apt-get install." >&2
+    exit 1
+  fi
+fi
+echo "make deps: installing:$missing"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+# shellcheck disable=SC2086
+if ! $SUDO apt-get install -y -qq $missing; then
+  echo "make deps: apt-get could not install:$missing" >&2
+  echo "  Debian 12 (bookworm) and Ubuntu 20.04 with ROS Noetic are supported." >&2
+  exit 1
+fi

@@ -1,0 +1,40 @@
+# Sourced by the other tools: one place that sets up the ROS environment.
+# shellcheck shell=bash
+
+REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+WS="$REPO/.ws"                  # the catkin workspace `make build` makes
+ROS_PYTHON=/usr/bin/python3     # ROS 1 runs on the system Python 3 only
+
+# A pyenv/conda/venv python3 first on PATH has no rospy; tools that say
+# `env python3` (rostest's hztest, for one) must find the system one.
+export PATH="/usr/bin:/bin:$PATH"
+unset PYTHONHOME
+
+# Stay on this machine unless the user chose otherwise.
+if [ -z "${ROS_IP:-}${ROS_HOSTNAME:-}" ]; then
+  export ROS_IP=127.0.0.1
+fi
+export ROS_MASTER_URI="${ROS_MASTER_URI:-http://127.0.0.1:11311}"
+
+ros_source() {
+  # setup.bash scripts read unset variables: relax `set -u` around them.
+  local had_u=0
+  case $- in *u*) had_u=1; set +u ;; esac
+  # shellcheck disable=SC1090
+  source "$1"
+  [ "$had_u" = 1 ] && set -u
+  return 0
+}
+
+if [ -f /opt/ros/noetic/setup.bash ]; then
+  ros_source /opt/ros/noetic/setup.bash
+fi
+
+source_workspace() {
+  if [ -f "$WS/devel/setup.bash" ]; then
+    ros_source "$WS/devel/setup.bash"
+  else
+    echo "The workspace is not built yet: run 'make build' first." >&2
+    return 1
+  fi
+}

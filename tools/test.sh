@@ -1,0 +1,31 @@
+#!/bin/bash
+# `make test`: unit tests (pytest, no ROS), then every rostest through catkin;
+# ends with one line "N passed, N failed" counted over all of them.
+set -u
+source "$(dirname "$0")/env.sh"
+source_workspace || exit 1
+
+results="$WS/build/test_results"
+rm -rf "$results"
+mkdir -p "$results/unit"
+status=0
+
+unit_dirs=(test/unit)
+[ -L "$WS/src/turtlesim" ] && unit_dirs+=(sim/turtlesim/test/unit)
+echo "== unit tests: ${unit_dirs[*]}"
+(cd "$REPO" && QT_QPA_PLATFORM=offscreen "$ROS_PYTHON" -m pytest -q -p no:cacheprovider \
+  --junitxml="$results/unit/pytest.xml" "${unit_dirs[@]}") || status=1
+
+echo "== integration tests (rostest)"
+# run_tests always exits 0; catkin_test_results is the gate.
+catkin_make -C "$WS" run_tests -j1 >"$WS/run_tests.log" 2>&1
+grep -E "^(\[ROSTEST\]|\[Testcase|SUMMARY|  \* RESULT|  \* TESTS|  \* ERRORS|  \* FAILURES)" \
+  "$WS/run_tests.log" || true
+catkin_test_results "$results" >"$WS/test_results.txt" 2>&1 || {
+  status=1
+  cat "$WS/test_results.txt"
+  echo "(the full rostest output is in $WS/run_tests.log)"
+}
+
+"$ROS_PYTHON" "$REPO/tools/summarize_tests.py" "$results" || status=1
+exit $status
