@@ -8,12 +8,13 @@ Private parameters (all optional):
         saved there when the node shuts down; `~save_canvas` saves there too
         (or to $ROS_HOME/turtlesim_canvas.png when unset).
 
-Rospy runs callbacks on its own threads; every one of them takes `_lock`, and
-so does the 16 ms tick on the Qt thread, so the world changes only between
-ticks, as in the real node.
+Rospy runs callbacks on its own threads. As in the real node, a service
+request is carried out at the start of the next 16 ms tick, and its caller
+waits until then: so a teleport requested before a set_pen is drawn with the
+pen it was requested under. Every change to the world happens under `_lock`.
 """
-import math
 import os
+import queue
 import sys
 import threading
 import time
@@ -29,6 +30,24 @@ from turtlesim.srv import (Kill, KillResponse, SetPen, SetPenResponse, Spawn, Sp
 from .world import CENTRE, DEFAULT_BACKGROUND, TICK_SECONDS, RequestError, World
 
 TICK_MS = int(TICK_SECONDS * 1000)
+CALL_TIMEOUT = 5.0   # s a service caller waits for a tick before giving up
+
+
+class _Call:
+    """A service request waiting for the next tick."""
+
+    def __init__(self, action):
+        self.action = action
+        self.done = threading.Event()
+        self.result = None
+        self.error = None
+
+    def run(self):
+        try:
+            self.result = self.action()
+        except Exception as e:  # handed back to the caller's thread
+            self.error = e
+        self.done.set()
 
 
 class TurtleEndpoints:
@@ -62,6 +81,7 @@ class TurtlesimNode:
         self._lock = threading.Lock()
         self._world = World()
         self._endpoints = {}
+        self._calls = queue.Queue()
         self.changed = True   # the picture differs from the last one shown
         rospy.loginfo('Starting turtlesim with node name %s', rospy.get_name())
         self._canvas = canvas_factory(self._background())
@@ -93,8 +113,20 @@ class TurtlesimNode:
         return os.path.abspath(os.path.expanduser(path)) if path else ''
 
     # -- the tick ----------------------------------------------------------
+    def at_next_tick(self, action):
+        """Run `action` at the start of the next tick and return its result."""
+        call = _Call(action)
+        self._calls.put(call)
+        if not call.done.wait(CALL_TIMEOUT):
+            raise rospy.ServiceException('turtlesim is not ticking (shutting down?)')
+        if call.error is not None:
+            raise call.error
+        return call.result
+
     def tick(self):
         with self._lock:
+            while not self._calls.empty():
+                self._calls.get_nowait().run()
             now = time.monotonic()
             for name, turtle in self._world.turtles.items():
                 segments, clamped_from = turtle.step(now)
@@ -136,7 +168,7 @@ class TurtlesimNode:
         raise rospy.ServiceException(str(error))
 
     def _turtle_call(self, name, what, action):
-        with self._lock:
+        def run():
             turtle = self._world.get(name)
             if turtle is None:
                 self._refuse(what, RequestError(f'no turtle named [{name}]'))
@@ -146,6 +178,7 @@ class TurtlesimNode:
                 rospy.logwarn('%s/%s: %s; nothing changed', name, what, e)
                 raise rospy.ServiceException(str(e))
             self.changed = True
+        self.at_next_tick(run)
 
     def on_set_pen(self, name, req):
         self._turtle_call(name, 'set_pen',
@@ -171,40 +204,46 @@ class TurtlesimNode:
         return turtle.name
 
     def on_spawn(self, req):
-        with self._lock:
+        def run():
             try:
                 return SpawnResponse(self._spawn(req.x, req.y, req.theta, req.name))
             except RequestError as e:
                 self._refuse('spawn', e)
+        return self.at_next_tick(run)
 
     def on_kill(self, req):
-        with self._lock:
+        def run():
             try:
                 self._world.kill(req.name)
             except RequestError as e:
                 self._refuse('kill', e)
             self._endpoints.pop(req.name).close()
             self.changed = True
+        self.at_next_tick(run)
         return KillResponse()
 
     def on_clear(self, _req):
         rospy.loginfo('Clearing turtlesim.')
         background = self._background()
-        with self._lock:
+
+        def run():
             self._canvas.clear(background)
             self.changed = True
+        self.at_next_tick(run)
         return EmptyResponse()
 
     def on_reset(self, _req):
         rospy.loginfo('Resetting turtlesim.')
         background = self._background()
-        with self._lock:
+
+        def run():
             for endpoints in self._endpoints.values():
                 endpoints.close()
             self._endpoints.clear()
             self._world = World()
             self._canvas.clear(background)
             self._spawn(CENTRE, CENTRE, 0.0, '')
+        self.at_next_tick(run)
         return EmptyResponse()
 
     def on_save_canvas(self, _req):
@@ -224,9 +263,18 @@ def _choose_platform(argv):
         os.environ['QT_QPA_PLATFORM'] = 'offscreen'
 
 
+def _quiet_qt_runtime_dir():
+    """Give Qt the runtime folder it would pick anyway, so it does not warn."""
+    if not os.environ.get('XDG_RUNTIME_DIR'):
+        path = f'/tmp/runtime-{os.getuid()}'
+        os.makedirs(path, mode=0o700, exist_ok=True)
+        os.environ['XDG_RUNTIME_DIR'] = path
+
+
 def main():
     argv = rospy.myargv(sys.argv)
     _choose_platform(argv)
+    _quiet_qt_runtime_dir()
     # Imported here, after the platform is chosen.
     from PyQt5.QtCore import Qt, QTimer
     from PyQt5.QtGui import QGuiApplication, QPainter

@@ -1,0 +1,220 @@
+#!/usr/bin/python3
+"""The running bundled simulator, through its real topics and services."""
+import math
+import os
+import tempfile
+import time
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import Twist
+from PyQt5.QtGui import QColor, QImage
+from rosgraph_msgs.msg import Log
+from std_srvs.srv import Empty, Trigger
+from turtlesim.msg import Color, Pose
+from turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative
+
+# md5sums of the real turtlesim 0.10.x types
+REAL_MD5 = {
+    Pose: '863b248d5016ca62ea2e895ae5265cf9',
+    Color: '353891e354491c51aabe32df673fb446',
+    Spawn: '0b2d2e872a8e2887d5ed626f2bf2c561',
+    Kill: 'c1f3d28f1b044c871e6eff2e9fc3c667',
+    SetPen: '9f452acce566bf0c0954594f69a8e41b',
+    TeleportAbsolute: 'a130bc60ee6513855dc62ea83fcc5b20',
+    TeleportRelative: '9d5c2dcd348ac8f76ce2a4307bd63a13',
+}
+CENTRE = 499 / 45.0 / 2
+WAIT = 10.0
+
+
+def call(name, srv_type, *args):
+    rospy.wait_for_service(name, timeout=WAIT)
+    return rospy.ServiceProxy(name, srv_type)(*args)
+
+
+def pose(name='turtle1'):
+    return rospy.wait_for_message(f'/{name}/pose', Pose, timeout=WAIT)
+
+
+def settled_pose(name='turtle1'):
+    """A pose from after every request made so far took effect (two ticks on)."""
+    pose(name)
+    pose(name)
+    return pose(name)
+
+
+def pixel(image, x, y):
+    c = QColor(image.pixel(int(round(x * 45)), int(round(499 - y * 45))))
+    return (c.red(), c.green(), c.blue())
+
+
+class TurtlesimContract(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('turtlesim_contract_test')
+        cls.logs = []
+        rospy.Subscriber('/rosout', Log, lambda m: cls.logs.append(m.msg))
+        pose()
+
+    def setUp(self):
+        call('/reset', Empty)
+        settled_pose()
+
+    def test_01_types_have_the_real_md5sums(self):
+        for msg_type, md5 in REAL_MD5.items():
+            self.assertEqual(msg_type._md5sum, md5, msg_type._type)
+
+    def test_02_starts_with_turtle1_at_the_centre_and_default_background(self):
+        p = pose()
+        self.assertAlmostEqual(p.x, CENTRE, places=5)
+        self.assertAlmostEqual(p.y, CENTRE, places=5)
+        self.assertEqual(p.theta, 0.0)
+        self.assertEqual([rospy.get_param(f'/turtlesim/background_{c}') for c in 'rgb'],
+                         [69, 86, 255])
+        colour = rospy.wait_for_message('/turtle1/color_sensor', Color, timeout=WAIT)
+        self.assertEqual((colour.r, colour.g, colour.b), (69, 86, 255))
+
+    def test_03_spawn_names_and_failures(self):
+        self.assertEqual(call('/spawn', Spawn, 1.0, 2.0, 0.5, '').name, 'turtle2')
+        self.assertEqual(call('/spawn', Spawn, 3.0, 2.0, 0.0, 'leo').name, 'leo')
+        p = pose('leo')
+        self.assertAlmostEqual(p.x, 3.0, places=5)
+        for bad in [(1.0, 1.0, 0.0, 'leo'), (1.0, 1.0, 0.0, '9lives'), (1.0, 1.0, 0.0, 'a b'),
+                    (math.nan, 1.0, 0.0, 'x'), (1.0, math.inf, 0.0, 'y')]:
+            with self.assertRaises(rospy.ServiceException, msg=str(bad)):
+                call('/spawn', Spawn, *bad)
+        call('/kill', Kill, 'leo')
+        with self.assertRaises(rospy.ServiceException):
+            call('/kill', Kill, 'leo')
+        with self.assertRaises(rospy.ServiceException):
+            call('/kill', Kill, 'nobody')
+        self.assertEqual(call('/spawn', Spawn, 1.0, 2.0, 0.5, '').name, 'turtle3')
+
+    def test_04_reset_removes_turtles_and_restarts_names(self):
+        call('/spawn', Spawn, 1.0, 2.0, 0.5, 'extra')
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 2.0, 2.0, 1.0)
+        call('/reset', Empty)
+        p = settled_pose()
+        self.assertAlmostEqual(p.x, CENTRE, places=5)
+        self.assertEqual(p.theta, 0.0)
+        with self.assertRaises(rospy.ServiceException):
+            call('/kill', Kill, 'extra')
+        self.assertEqual(call('/spawn', Spawn, 1.0, 2.0, 0.5, '').name, 'turtle2')
+
+    def test_05_teleports_and_bad_numbers(self):
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 2.0, 3.0, 0.0)
+        call('/turtle1/teleport_relative', TeleportRelative, 1.0, math.pi / 2)
+        p = settled_pose()
+        self.assertAlmostEqual(p.x, 2.0, places=4)
+        self.assertAlmostEqual(p.y, 4.0, places=4)
+        self.assertAlmostEqual(p.theta, math.pi / 2, places=4)
+        for service, srv_type, args in [
+                ('/turtle1/teleport_absolute', TeleportAbsolute, (math.nan, 1.0, 0.0)),
+                ('/turtle1/teleport_relative', TeleportRelative, (math.inf, 0.0))]:
+            with self.assertRaises(rospy.ServiceException):
+                call(service, srv_type, *args)
+        p = settled_pose()
+        self.assertAlmostEqual(p.x, 2.0, places=4)
+        self.assertAlmostEqual(p.y, 4.0, places=4)
+
+    def test_06_cmd_vel_moves_then_times_out_after_a_second(self):
+        pub = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=1)
+        twist = Twist()
+        twist.linear.x = 1.0
+        deadline = time.time() + WAIT
+        while pub.get_num_connections() == 0 and time.time() < deadline:
+            rospy.sleep(0.05)
+        pub.publish(twist)
+        moving = rospy.wait_for_message('/turtle1/pose', Pose, timeout=WAIT)
+        while moving.linear_velocity == 0.0 and time.time() < deadline:
+            moving = pose()
+        self.assertEqual(moving.linear_velocity, 1.0)
+        rospy.sleep(2.0)
+        stopped = settled_pose()
+        self.assertEqual(stopped.linear_velocity, 0.0)
+        # about 1 s of motion at 1 m/s (62 or 63 ticks of 16 ms; more when loaded)
+        self.assertGreater(stopped.x - CENTRE, 0.9)
+        self.assertLess(stopped.x - CENTRE, 1.3)
+
+    def test_07_nan_and_huge_velocities(self):
+        pub = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=10)
+        deadline = time.time() + WAIT
+        while pub.get_num_connections() == 0 and time.time() < deadline:
+            rospy.sleep(0.05)
+        bad = Twist()
+        bad.linear.x = math.nan
+        bad.angular.z = math.inf
+        for _ in range(20):
+            pub.publish(bad)
+            rospy.sleep(0.01)
+        p = settled_pose()
+        self.assertEqual((p.x, p.theta, p.linear_velocity), (pose().x, 0.0, 0.0))
+        self.assertAlmostEqual(p.x, CENTRE, places=5)
+        huge = Twist()
+        huge.linear.x = 1e9
+        pub.publish(huge)
+        deadline = time.time() + WAIT
+        p = pose()
+        while p.x < 11.0 and time.time() < deadline:
+            p = pose()
+        self.assertAlmostEqual(p.x, 499 / 45.0, places=4)
+        self.assertAlmostEqual(p.y, CENTRE, places=4)
+        deadline = time.time() + WAIT
+        while not any('Oh no! I hit the wall!' in m for m in self.logs) and time.time() < deadline:
+            rospy.sleep(0.1)
+        self.assertTrue(any('Oh no! I hit the wall! (Clamping from [x=' in m for m in self.logs))
+
+    def test_08_pen_on_and_off_are_visible_in_the_saved_picture(self):
+        pen = '/turtle1/set_pen'
+        call(pen, SetPen, 0, 0, 0, 0, 1)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 1.0, 1.0, 0.0)
+        call(pen, SetPen, 255, 0, 0, 3, 0)
+        call('/turtle1/teleport_relative', TeleportRelative, 3.0, 0.0)     # drawn: y = 1
+        call(pen, SetPen, 0, 255, 0, 0, 1)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 1.0, 3.0, 0.0)
+        call('/turtle1/teleport_relative', TeleportRelative, 3.0, 0.0)     # not drawn: y = 3
+        settled_pose()
+        path = os.path.join(tempfile.mkdtemp(), 'canvas.png')
+        rospy.set_param('/turtlesim/canvas_png', path)
+        answer = call('/turtlesim/save_canvas', Trigger)
+        self.assertTrue(answer.success, answer.message)
+        self.assertEqual(answer.message, path)
+        image = QImage(path)
+        self.assertEqual((image.width(), image.height()), (500, 500))
+        for x in (1.5, 2.0, 2.5, 3.0):
+            self.assertEqual(pixel(image, x, 1.0), (255, 0, 0))
+            self.assertEqual(pixel(image, x, 3.0), (69, 86, 255))
+        # the pen colour is sensed under the turtle once it drives over its own line
+        call(pen, SetPen, 255, 0, 0, 3, 0)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 2.0, 1.0, 0.0)
+        settled_pose()
+        colour = rospy.wait_for_message('/turtle1/color_sensor', Color, timeout=WAIT)
+        self.assertEqual((colour.r, colour.g, colour.b), (255, 0, 0))
+
+    def test_09_clear_uses_the_background_parameters(self):
+        call('/turtle1/teleport_relative', TeleportRelative, 1.0, 0.0)
+        for channel, value in zip('rgb', (10, 20, 30)):
+            rospy.set_param(f'/turtlesim/background_{channel}', value)
+        try:
+            call('/clear', Empty)
+            settled_pose()
+            colour = rospy.wait_for_message('/turtle1/color_sensor', Color, timeout=WAIT)
+            self.assertEqual((colour.r, colour.g, colour.b), (10, 20, 30))
+        finally:
+            for channel, value in zip('rgb', (69, 86, 255)):
+                rospy.set_param(f'/turtlesim/background_{channel}', value)
+            call('/clear', Empty)
+
+    def test_10_every_turtle_has_its_topics_and_services(self):
+        call('/spawn', Spawn, 2.0, 2.0, 0.0, 'ada')
+        for service in ('set_pen', 'teleport_absolute', 'teleport_relative'):
+            rospy.wait_for_service(f'/ada/{service}', timeout=WAIT)
+        p = pose('ada')
+        self.assertAlmostEqual(p.x, 2.0, places=5)
+        rospy.wait_for_message('/ada/color_sensor', Color, timeout=WAIT)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('turtlesim', 'turtlesim_contract', TurtlesimContract)
