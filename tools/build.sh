@@ -4,8 +4,15 @@
 set -eu
 source "$(dirname "$0")/env.sh"
 
+# The package is linked in part by part rather than as the whole repository:
+# a link to the repository root would put .ws inside itself, and tools that
+# walk a package's folder (rosrun, rospack) would loop.
 mkdir -p "$WS/src"
-ln -sfn "$REPO" "$WS/src/turtle_letters"
+[ -L "$WS/src/turtle_letters" ] && rm "$WS/src/turtle_letters"
+mkdir -p "$WS/src/turtle_letters"
+for part in package.xml CMakeLists.txt setup.py README.md launch scripts src test; do
+  ln -sfn "$REPO/$part" "$WS/src/turtle_letters/$part"
+done
 
 installed_turtlesim() {
   # Look in the installed ROS prefixes only, never in our own workspace.
