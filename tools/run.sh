@@ -5,6 +5,7 @@ source "$(dirname "$0")/env.sh"
 source_workspace
 
 args=("$@")
+picture=""
 if [ -z "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ "$(cat "$WS/.simulator")" = bundled ]; then
   picture="${TURTLE_LETTERS_PICTURE:-$REPO/.ws/canvas.png}"
   echo "make run: no display, so the simulator runs headless; when you stop it (Ctrl-C)"
@@ -15,4 +16,13 @@ elif [ -z "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
 fi
 echo "make run: press P in this terminal to draw; from another terminal:"
 echo "          rostopic pub -1 /chatter std_msgs/String \"data: 'P'\""
-exec roslaunch turtle_letters draw_letter.launch "${args[@]}"
+
+# Ctrl-C reaches roslaunch from the terminal; this script only waits for it
+# to finish so that it can say where the picture went.
+trap true INT TERM
+started=$(date +%s)
+roslaunch turtle_letters draw_letter.launch "${args[@]}" || status=$?
+if [ -n "$picture" ] && [ -f "$picture" ] && [ "$(stat -c %Y "$picture")" -ge "$started" ]; then
+  echo "make run: the picture is in $picture"
+fi
+exit "${status:-0}"
