@@ -15,76 +15,12 @@ from std_srvs.srv import Empty
 from turtlesim.msg import Pose as PoseMsg
 from turtlesim.srv import SetPen
 
-from .font import FONT
 from .motion import EXECUTORS, STOP, PoseSample
-from .plan import TURN_DIRECTIONS, DoesNotFit, Layout, Line, Pen, Pose, Turn, glyph_for, plan_glyph, wrap
+from .plan import DoesNotFit, Layout, Line, Pen, Pose, Turn, glyph_for, plan_glyph, wrap
+from .settings import ParameterError, Settings
 
 DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own default pen
 POSE_TIMEOUT = 1.0                  # s without a pose: the simulator is gone
-
-
-class ParameterError(ValueError):
-    pass
-
-
-class Settings:
-    """The node's private parameters, read and checked in one place.
-
-    ~trigger (str, default "P"): the /chatter message that starts a drawing.
-    ~letter (str, default "N"): the character drawn on a trigger (A-Z, 0-9).
-    ~size (float, default 3.0, m): letter height; the lab's N is 3.0 m.
-    ~mode (str, default "timed"): "timed" (the lab's open-loop primitives,
-        timed on the simulator's clock) or "feedback" (closed loop on the pose).
-    ~linear_speed (float, default 1.0, m/s), ~angular_speed (float, default
-        0.25, rad/s): the lab's speeds; in feedback mode, the caps.
-    ~turn_direction (str, default "ccw"): "ccw" turns counter-clockwise only,
-        as the lab does; "shortest" turns whichever way is shorter.
-    ~typing (bool, default false): draw every letter or digit heard on
-        /chatter, like a typewriter, instead of ~letter on ~trigger.
-    ~text (str, default ""): if set, drawn once as soon as the turtle's pose
-        is known.
-    """
-
-    def __init__(self, get=rospy.get_param):
-        self.trigger = self._string(get, '~trigger', 'P')
-        self.letter = self._string(get, '~letter', 'N').upper()
-        self.size = self._positive(get, '~size', 3.0, 'm')
-        self.mode = self._choice(get, '~mode', 'timed', tuple(EXECUTORS))
-        self.linear_speed = self._positive(get, '~linear_speed', 1.0, 'm/s')
-        self.angular_speed = self._positive(get, '~angular_speed', 0.25, 'rad/s')
-        self.turn_direction = self._choice(get, '~turn_direction', 'ccw', TURN_DIRECTIONS)
-        self.typing = get('~typing', False)
-        self.text = self._string(get, '~text', '').upper()
-        if not isinstance(self.typing, bool):
-            raise ParameterError(f'~typing is {self.typing!r}; allowed: true or false')
-        if glyph_for(self.letter) is None or len(self.letter) != 1:
-            raise ParameterError(
-                f'~letter is {self.letter!r}; allowed: one of {"".join(sorted(FONT))}')
-        bad = sorted({c for c in self.text if c != ' ' and glyph_for(c) is None})
-        if bad:
-            raise ParameterError(f'~text has characters with no glyph {bad}; allowed: A-Z, 0-9, space')
-
-    @staticmethod
-    def _string(get, name, default):
-        value = get(name, default)
-        if not isinstance(value, str):
-            raise ParameterError(f'{name} is {value!r}; allowed: a string')
-        return value
-
-    @staticmethod
-    def _positive(get, name, default, unit):
-        value = get(name, default)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) \
-                or not math.isfinite(value) or value <= 0:
-            raise ParameterError(f'{name} is {value!r}; allowed: a number > 0 ({unit})')
-        return float(value)
-
-    @staticmethod
-    def _choice(get, name, default, allowed):
-        value = get(name, default)
-        if value not in allowed:
-            raise ParameterError(f'{name} is {value!r}; allowed: {", ".join(allowed)}')
-        return value
 
 
 class DrawingAborted(RuntimeError):
@@ -195,7 +131,10 @@ class TurtleController:
 
     def stop(self):
         """Stop the turtle now rather than let it coast for turtlesim's 1 s timeout."""
-        self._publish(STOP)
+        try:
+            self._publish(STOP)
+        except rospy.ROSException:
+            pass    # already shut down: the shutdown hook sent the stop
 
     def _pen(self, down):
         self._set_pen(*DEFAULT_PEN, 0 if down else 1)
@@ -225,6 +164,10 @@ class TurtleController:
                 self.draw(text)
             except DrawingAborted as e:
                 self.stop()
+                # The simulator may come back with a fresh canvas: start the
+                # layout again from wherever the turtle is then.
+                self._layout = None
+                self._pen_known_down = False
                 rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text, e)
             except DoesNotFit as e:
                 rospy.logerr('Refused: %s', e)
@@ -277,7 +220,7 @@ def _pose_text(pose):
 def main():
     rospy.init_node('turtlebot_controller')
     try:
-        settings = Settings()
+        settings = Settings(rospy.get_param)
     except ParameterError as e:
         rospy.logfatal('%s: %s', rospy.get_name(), e)
         raise SystemExit(2)

@@ -12,6 +12,8 @@ from .font import ASCENT, FONT, LETTER_SPACING, LINE_HEIGHT, SPACE_WIDTH, Glyph
 
 WORLD_SIZE = 499 / 45.0     # turtlesim's usable canvas, meters
 MARGIN = 0.5                # no stroke comes closer than this to a wall
+WIDEST = max(g.width for g in FONT.values())
+LARGEST_SIZE = (WORLD_SIZE - 2 * MARGIN) / max(ASCENT, WIDEST)
 TURN_DIRECTIONS = ('ccw', 'shortest')
 
 
@@ -107,17 +109,17 @@ class Layout:
     margin; when the canvas is full, it is cleared and we start again."""
 
     def __init__(self, first_place: Tuple[float, float], size: float) -> None:
-        self.first_place = first_place
         self.size = size
+        if not self.fits_at(*first_place, WIDEST):
+            # The turtle starts too near a wall for this size: begin top left.
+            first_place = (MARGIN, WORLD_SIZE - MARGIN - ASCENT * size)
+        self.first_place = first_place
         self.cursor = first_place
 
     def fits_at(self, x: float, y: float, width: float) -> bool:
         high = WORLD_SIZE - MARGIN
         return (MARGIN <= x and x + width * self.size <= high
                 and MARGIN <= y and y + ASCENT * self.size <= high)
-
-    def first_place_fits(self) -> bool:
-        return self.fits_at(*self.first_place, 0.0)
 
     def places(self, widths: List[float], cursor: Tuple[float, float]):
         """Where boxes of these widths go from `cursor`, or None once the canvas is full."""

@@ -1,0 +1,195 @@
+#!/usr/bin/python3
+"""Bad input and faults, with real nodes: junk on /chatter, a trigger burst,
+the start order, the simulator dying mid-drawing, SIGTERM mid-drawing."""
+import math
+import signal
+import threading
+import time
+import unittest
+
+import rospy
+import rostest
+from std_msgs.msg import String
+from turtlesim.msg import Pose
+
+from path_checks import LAB_N
+from processes import LogWatch, NodeProcess, cpu_seconds, node_pid, rss_mb, simulator
+
+# Feedback mode at higher speeds draws the N in seconds; the timing of the
+# lab's mode is not what these tests are about.
+FAST = ('_mode:=feedback', '_linear_speed:=3.0', '_angular_speed:=3.0')
+CONTROLLER = '/turtlebot_controller'
+
+
+def controller(*params):
+    return NodeProcess('turtle_letters', 'turtle_controller.py', *(params or FAST))
+
+
+class Faults(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('faults_test')
+        cls.logs = LogWatch()
+        cls.poses = []
+        cls.lock = threading.Lock()
+        rospy.Subscriber('/turtle1/pose', Pose, cls.on_pose, queue_size=1000)
+        cls.chatter = rospy.Publisher('/chatter', String, queue_size=2000)
+
+    @classmethod
+    def on_pose(cls, msg):
+        with cls.lock:
+            cls.poses.append((time.time(), msg))
+
+    def start(self, process):
+        self.addCleanup(process.stop)
+        return process
+
+    def wait_for_node(self, name, timeout=30):
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            try:
+                return node_pid(name)
+            except Exception:
+                time.sleep(0.2)
+        self.fail(f'{name} did not come up')
+
+    def wait_for_chatter_subscriber(self):
+        deadline = time.time() + 20
+        while self.chatter.get_num_connections() == 0 and time.time() < deadline:
+            time.sleep(0.05)
+        time.sleep(0.3)
+
+    def moving_since(self, t0):
+        with self.lock:
+            return [m for t, m in self.poses if t >= t0 and (m.linear_velocity or m.angular_velocity)]
+
+    def wait_until_still(self, t0, timeout=60, still_for=1.5):
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            with self.lock:
+                last_move = max((t for t, m in self.poses[-500:]
+                                 if t >= t0 and (m.linear_velocity or m.angular_velocity)),
+                                default=None)
+            if last_move and time.time() - last_move > still_for:
+                return True
+            time.sleep(0.1)
+        return False
+
+    def last_pose(self):
+        with self.lock:
+            return self.poses[-1][1]
+
+    def assert_at_n_end(self):
+        p = self.last_pose()
+        self.assertLess(math.hypot(p.x - LAB_N[-1][0], p.y - LAB_N[-1][1]), 0.01)
+
+    def assert_no_traceback(self, *processes):
+        for process in processes:
+            self.assertNotIn('Traceback', process.output())
+        self.assertEqual(self.logs.count('Traceback'), 0)
+
+    def test_1_junk_on_chatter_draws_nothing_and_a_burst_draws_once(self):
+        sim = self.start(simulator())
+        ctl = self.start(controller())
+        pid = self.wait_for_node(CONTROLLER)
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        self.wait_for_chatter_subscriber()
+        rss_before = rss_mb(pid)
+
+        t0 = time.time()
+        for junk in ['', ' ', '\t\n', 'p', 'PP', 'P ', ' P', 'x' * 1_000_000, 'Ｐ', 'Пп', '🐢P']:
+            self.chatter.publish(String(junk))
+        time.sleep(3.0)
+        self.assertEqual(self.moving_since(t0), [], 'junk made the turtle move')
+        self.assertEqual(self.logs.count('Drawing ', CONTROLLER), 0)
+
+        t0 = time.time()
+        cpu0 = cpu_seconds(pid)
+        for _ in range(1000):
+            self.chatter.publish(String('P'))
+            time.sleep(0.0008)
+        burst_seconds = time.time() - t0
+        self.assertLess(burst_seconds, 2.0)
+        self.assertTrue(self.wait_until_still(t0), 'the drawing never ended')
+        busy = (cpu_seconds(pid) - cpu0) / (time.time() - t0)
+        self.assertEqual(self.logs.count("Drawing 'N'", CONTROLLER), 1)
+        self.assert_at_n_end()
+        self.assertLess(busy, 0.8, 'controller CPU (share of one core) during the burst')
+        self.assertLess(rss_mb(pid) - rss_before, 40.0, 'controller memory grew')
+        self.assertTrue(ctl.alive() and sim.alive())
+        self.assert_no_traceback(ctl, sim)
+
+    def test_2_controller_before_the_simulator_keeps_the_trigger(self):
+        ctl = self.start(controller())
+        self.wait_for_node(CONTROLLER)
+        self.wait_for_chatter_subscriber()
+        self.chatter.publish(String('P'))
+        time.sleep(3.0)
+        self.assertEqual(self.logs.count('Waiting for turtlesim', CONTROLLER), 1)
+        t0 = time.time()
+        sim = self.start(simulator())
+        self.assertTrue(self.wait_until_still(t0), 'the kept trigger was not drawn')
+        self.assert_at_n_end()
+        self.assertEqual(self.logs.count('Waiting for turtlesim', CONTROLLER), 1)
+        self.assert_no_traceback(ctl, sim)
+
+    def test_3_simulator_killed_mid_drawing_then_back(self):
+        sim = simulator()
+        ctl = self.start(controller())
+        self.wait_for_node(CONTROLLER)
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        self.wait_for_chatter_subscriber()
+        self.chatter.publish(String('P'))
+        time.sleep(1.0)
+        t_kill = time.time()
+        sim.send(signal.SIGKILL)
+        sim.process.wait()
+        self.assertTrue(self.logs.wait_for('no pose from turtlesim', 5.0, CONTROLLER))
+        noticed = [m for m in self.logs.messages if 'no pose from turtlesim' in m.msg][0]
+        self.assertLess(noticed.header.stamp.to_sec() - t_kill, 2.5)
+        self.assertTrue(ctl.alive())
+
+        t0 = time.time()
+        sim = self.start(simulator())
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        time.sleep(1.0)
+        self.chatter.publish(String('P'))
+        self.assertTrue(self.wait_until_still(t0), 'no drawing after the simulator came back')
+        self.assert_at_n_end()
+        self.assert_no_traceback(ctl)
+
+    def check_stops_at_once(self, sig):
+        self.start(simulator())
+        ctl = controller()
+        pid = self.wait_for_node(CONTROLLER)
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        self.wait_for_chatter_subscriber()
+        self.chatter.publish(String('P'))
+        deadline = time.time() + 10
+        while not self.moving_since(time.time() - 0.1) and time.time() < deadline:
+            time.sleep(0.05)
+        time.sleep(0.5)
+        self.assertTrue(self.moving_since(time.time() - 0.2), 'not drawing')
+        t_signal = time.time()
+        import os
+        os.kill(pid, sig)
+        ctl.process.wait(15)
+        exited = time.time()
+        time.sleep(1.5)
+        with self.lock:
+            after_exit = [m for t, m in self.poses if t > exited]
+        # turtlesim would coast for 1 s (62 ticks) without the stop message
+        still_moving = [m for m in after_exit if m.linear_velocity or m.angular_velocity]
+        self.assertLessEqual(len(still_moving), 2, f'{len(still_moving)} ticks of coasting')
+        self.assertLess(exited - t_signal, 10.0)
+        self.assertNotIn('Traceback', ctl.output())
+
+    def test_4_sigterm_mid_drawing_stops_the_turtle(self):
+        self.check_stops_at_once(signal.SIGTERM)
+
+    def test_5_ctrl_c_mid_drawing_stops_the_turtle(self):
+        self.check_stops_at_once(signal.SIGINT)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('turtle_letters', 'faults', Faults)
