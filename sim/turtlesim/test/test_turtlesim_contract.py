@@ -215,6 +215,29 @@ class TurtlesimContract(unittest.TestCase):
         self.assertAlmostEqual(p.x, 2.0, places=5)
         rospy.wait_for_message('/ada/color_sensor', Color, timeout=WAIT)
 
+    def test_11_keeps_its_rate_and_answers_under_a_cmd_vel_flood(self):
+        pub = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=100)
+        deadline = time.time() + WAIT
+        while pub.get_num_connections() == 0 and time.time() < deadline:
+            rospy.sleep(0.05)
+        stamps = []
+        sub = rospy.Subscriber('/turtle1/pose', Pose, lambda _: stamps.append(time.time()))
+        twist = Twist()
+        twist.angular.z = 0.5
+        t0 = time.time()
+        sent = 0
+        while time.time() - t0 < 3.0:
+            pub.publish(twist)
+            sent += 1
+            time.sleep(0.001)
+        sub.unregister()
+        rate = len([t for t in stamps if t0 + 0.5 <= t <= t0 + 3.0]) / 2.5
+        self.assertGreater(sent, 1500)
+        # 62.5 Hz; the tolerance holds on a loaded 2-core machine
+        self.assertGreater(rate, 55.0)
+        self.assertEqual(call('/spawn', Spawn, 2.0, 2.0, 0.0, 'after_flood').name, 'after_flood')
+        self.assertAlmostEqual(pose('after_flood').x, 2.0, places=5)
+
 
 if __name__ == '__main__':
     rostest.rosrun('turtlesim', 'turtlesim_contract', TurtlesimContract)

@@ -1,0 +1,95 @@
+#!/usr/bin/python3
+"""The talker without a terminal: stdin from a pipe, /dev/null, or closed;
+it never spins, never crashes, and keeps a press until someone listens."""
+import os
+import signal
+import subprocess
+import time
+import unittest
+
+import rospy
+import rostest
+from std_msgs.msg import String
+
+from processes import LogWatch, NodeProcess, cpu_seconds, node_pid
+from terminal import Terminal
+
+TALKER = '/talker'
+
+
+class TalkerFaults(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('talker_faults_test')
+        cls.logs = LogWatch()
+
+    def setUp(self):
+        self.logs.messages.clear()      # each test counts its own talker's lines
+
+    def start_talker(self, stdin):
+        talker = NodeProcess('turtle_letters', 'talker.py', stdin=stdin)
+        self.addCleanup(talker.stop)
+        deadline = time.time() + 30
+        while time.time() < deadline:
+            try:
+                return talker, node_pid(TALKER)
+            except Exception:
+                time.sleep(0.2)
+        self.fail('the talker did not come up:\n' + talker.output())
+
+    def assert_idles_then_ends_cleanly(self, talker, pid, sig):
+        cpu0, t0 = cpu_seconds(pid), time.time()
+        time.sleep(3.0)
+        share = (cpu_seconds(pid) - cpu0) / (time.time() - t0)
+        self.assertLess(share, 0.05, f'the idle talker uses {share:.0%} of a core')
+        talker.send(sig)
+        talker.process.wait(15)
+        self.assertNotIn('Traceback', talker.output())
+
+    def test_piped_press_before_any_subscriber_is_kept_then_end_of_input(self):
+        read_end, write_end = os.pipe()
+        talker, pid = self.start_talker(read_end)
+        os.close(read_end)
+        os.write(write_end, b'x\nP\n')
+        os.close(write_end)                                     # end of input
+        self.assertTrue(self.logs.wait_for('End of input', 15, TALKER), talker.output())
+        time.sleep(0.5)
+        heard = []
+        rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
+        deadline = time.time() + 10
+        while not heard and time.time() < deadline:
+            time.sleep(0.05)
+        self.assertEqual(heard, ['P'])                         # kept, not lost
+        self.assertEqual(self.logs.count('End of input', TALKER), 1)
+        self.assert_idles_then_ends_cleanly(talker, pid, signal.SIGTERM)
+
+    def test_dev_null(self):
+        talker, pid = self.start_talker(subprocess.DEVNULL)
+        self.assertTrue(self.logs.wait_for('End of input', 15, TALKER), talker.output())
+        self.assert_idles_then_ends_cleanly(talker, pid, signal.SIGINT)
+
+    def test_stdin_closed(self):
+        talker = NodeProcess('turtle_letters', 'talker.py', stdin=None)
+        self.addCleanup(talker.stop)
+        # A closed fd 0 cannot be passed to Popen: close it in the shell.
+        talker.stop(signal.SIGKILL)
+        talker.process = subprocess.Popen(
+            ['bash', '-c', 'exec rosrun turtle_letters talker.py <&-'],
+            stdout=open(talker.out_path, 'w'), stderr=subprocess.STDOUT)
+        self.assertTrue(self.logs.wait_for('No standard input', 15, TALKER), talker.output())
+        self.assert_idles_then_ends_cleanly(talker, node_pid(TALKER), signal.SIGTERM)
+
+    def test_sigterm_in_a_terminal_restores_it(self):
+        term = Terminal('stty -g > before; rosrun turtle_letters talker.py; '
+                        'stty -g > after; echo "TALKER" "EXITED"', cwd=True)
+        self.addCleanup(term.close)
+        self.assertTrue(term.wait_for('talker: press P', 30), term.screen())
+        self.assertIn('-icanon', term.flags())
+        os.kill(node_pid(TALKER), signal.SIGTERM)
+        self.assertTrue(term.wait_for('TALKER EXITED', 20), term.screen())
+        self.assertEqual(term.read('after'), term.read('before'))
+        self.assertNotIn('Traceback', term.screen())
+
+
+if __name__ == '__main__':
+    rostest.rosrun('turtle_letters', 'talker_faults', TalkerFaults)
