@@ -6,6 +6,7 @@ it ends. Without a terminal it reads lines, so `echo P | rosrun ...` works.
 """
 import os
 import select
+import signal
 import sys
 import termios
 import threading
@@ -16,7 +17,41 @@ from std_msgs.msg import String
 
 from .keys import message_for
 
-WAKE_UP = 0.5   # s: how often a blocked read looks whether the node is shutting down
+WAKE_UP = 0.5   # s: how often a blocked wait looks whether ROS shut the node down
+
+
+class SignalPipe:
+    """SIGINT and SIGTERM, turned into a readable pipe.
+
+    rospy's own handler would shut the node down wherever the main thread
+    happens to be, even inside publish(), where shutdown then waits for a lock
+    the interrupted publish holds. Here the handler only writes a byte; the
+    main loop sees it in select() and shuts down from a clean point.
+    """
+
+    def __init__(self):
+        self.fd, self._write_fd = os.pipe()
+        os.set_blocking(self._write_fd, False)
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(sig, self._on_signal)
+
+    def _on_signal(self, number, _frame):
+        try:
+            os.write(self._write_fd, bytes([number]))
+        except BlockingIOError:
+            pass
+
+    def wait(self, fd=None):
+        """Block until fd is readable (True) or shutdown is due (False)."""
+        watched = [self.fd] if fd is None else [fd, self.fd]
+        while not rospy.is_shutdown():
+            readable, _, _ = select.select(watched, [], [], WAKE_UP)
+            if self.fd in readable:
+                rospy.signal_shutdown(f'signal {os.read(self.fd, 1)[0]}')
+                return False
+            if readable:
+                return True
+        return False
 
 
 class Talker(rospy.SubscribeListener):
@@ -57,22 +92,13 @@ class Talker(rospy.SubscribeListener):
             rospy.loginfo('Published kept %r on %s', message, topic_name)
 
 
-def _wait_readable(fd):
-    """Block until fd has input or the node shuts down; True if readable."""
-    while not rospy.is_shutdown():
-        readable, _, _ = select.select([fd], [], [], WAKE_UP)
-        if readable:
-            return True
-    return False
-
-
-def read_keys(talker, fd, prompt):
+def read_keys(talker, fd, prompt, signals):
     """Key presses from a terminal, in cbreak mode, restored however we leave."""
     saved = termios.tcgetattr(fd)
     try:
         tty.setcbreak(fd, termios.TCSANOW)
         prompt()
-        while _wait_readable(fd):
+        while signals.wait(fd):
             data = os.read(fd, 64)
             if not data:
                 break
@@ -82,10 +108,10 @@ def read_keys(talker, fd, prompt):
         termios.tcsetattr(fd, termios.TCSADRAIN, saved)
 
 
-def read_lines(talker, fd):
+def read_lines(talker, fd, signals):
     """Lines from a pipe or file; each character of a line counts as a press."""
     buffered = b''
-    while _wait_readable(fd):
+    while signals.wait(fd):
         data = os.read(fd, 4096)
         if not data:
             return
@@ -97,7 +123,8 @@ def read_lines(talker, fd):
 
 
 def main():
-    rospy.init_node('talker')
+    rospy.init_node('talker', disable_signals=True)
+    signals = SignalPipe()
     typing = rospy.get_param('~typing', False)
     if not isinstance(typing, bool):
         rospy.logfatal('%s: ~typing is %r; allowed: true or false', rospy.get_name(), typing)
@@ -118,10 +145,10 @@ def main():
         def prompt():
             sys.stdout.write(f'talker: press {what} (no Enter needed); Ctrl-C quits\n')
             sys.stdout.flush()
-        read_keys(talker, fd, prompt)
+        read_keys(talker, fd, prompt, signals)
     else:
-        read_lines(talker, fd)
+        read_lines(talker, fd, signals)
         if not rospy.is_shutdown():
             rospy.loginfo('End of input: no more keys to read; the talker stays up '
                           'until shut down (kept presses still go out)')
-    rospy.spin()
+    signals.wait()

@@ -15,6 +15,7 @@ pen it was requested under. Every change to the world happens under `_lock`.
 """
 import os
 import queue
+import signal
 import sys
 import threading
 import time
@@ -282,7 +283,13 @@ def main():
     from .canvas import Canvas
 
     app = QApplication(argv)
-    rospy.init_node('turtlesim')
+    # rospy's own signal handler would shut down in the middle of whatever
+    # the Qt thread was doing, even inside a publish() holding the lock that
+    # shutdown needs: a hang. Note the signal; the tick shuts down cleanly.
+    rospy.init_node('turtlesim', disable_signals=True)
+    signalled = []
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, lambda number, _frame: signalled.append(number))
     node = TurtlesimNode(Canvas)
     headless = QGuiApplication.platformName() in ('offscreen', 'minimal')
 
@@ -302,6 +309,8 @@ def main():
                       QGuiApplication.platformName())
 
     def on_tick():
+        if signalled and not rospy.is_shutdown():
+            rospy.signal_shutdown(f'signal {signalled[0]}')
         if rospy.is_shutdown():
             app.quit()
             return

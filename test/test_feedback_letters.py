@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""Feedback mode: a word from the controller's ~text topic, drawn to the
+millimetre, the pen lifted between strokes, nothing drawn while travelling."""
+import math
+import os
+import tempfile
+import threading
+import time
+import unittest
+
+import rospy
+import rostest
+from PyQt5.QtGui import QColor, QImage
+from std_msgs.msg import String
+from std_srvs.srv import Trigger
+from turtlesim.msg import Pose as PoseMsg
+
+from path_checks import distance_to_polyline, touches_a_wall, vertex_errors
+from turtle_letters.plan import Layout, Line, Pen, Pose, glyph_for, glyph_strokes, plan_glyph
+
+VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
+PEN = (179, 184, 255)
+BACKGROUND = (69, 86, 255)
+
+
+def expected(text, start, size, direction):
+    """Strokes and pen-up travel segments, by the package's own plan."""
+    places, _ = Layout((start.x, start.y), size).reserve(text)
+    strokes, travel = [], []
+    pose = start
+    for char, place in zip(text, places):
+        if place is None:
+            continue
+        glyph = glyph_for(char)
+        strokes += glyph_strokes(glyph, place, size)
+        primitives, end = plan_glyph(glyph, place, size, pose, direction)
+        pen_down, here = True, (pose.x, pose.y)
+        for p in primitives:
+            if isinstance(p, Pen):
+                pen_down = p.down
+            elif isinstance(p, Line):
+                if not pen_down:
+                    travel.append([here, (p.x, p.y)])
+                here = (p.x, p.y)
+        pose = end
+    return strokes, travel
+
+
+def pixel(image, x, y):
+    c = QColor(image.pixel(int(round(x * 45)), int(round(499 - y * 45))))
+    return (c.red(), c.green(), c.blue())
+
+
+class FeedbackLetters(unittest.TestCase):
+    def test_a_three_letter_word_from_the_text_topic(self):
+        rospy.init_node('feedback_letters_test')
+        text = rospy.get_param('~text')
+        size = rospy.get_param('~size')
+        poses, lock = [], threading.Lock()
+
+        def on_pose(msg):
+            with lock:
+                poses.append(msg)
+        first = rospy.wait_for_message('/turtle1/pose', PoseMsg, timeout=30)
+        rospy.Subscriber('/turtle1/pose', PoseMsg, on_pose, queue_size=1000)
+        pub = rospy.Publisher('/turtlebot_controller/text', String, queue_size=1, latch=True)
+        pub.publish(String(text))
+
+        strokes, travel = expected(text, Pose(first.x, first.y, first.theta), size, 'shortest')
+        last = strokes[-1][-1]
+        deadline = time.time() + 400
+        while time.time() < deadline:
+            with lock:
+                p = poses[-1] if poses else first
+            if math.hypot(p.x - last[0], p.y - last[1]) < 1e-3 and p.linear_velocity == 0:
+                break
+            time.sleep(0.2)
+        time.sleep(0.5)
+        with lock:
+            path = [(p.x, p.y) for p in poses]
+
+        vertices = [v for stroke in strokes for v in stroke]
+        errors = vertex_errors(path, vertices)
+        self.assertLess(max(errors), VERTEX_TOLERANCE, f'worst vertex {max(errors) * 1000:.2f} mm')
+        allowed = strokes + travel
+        worst = max(min(distance_to_polyline(q, line) for line in allowed) for q in path)
+        self.assertLess(worst, VERTEX_TOLERANCE, f'{worst * 1000:.2f} mm off the strokes')
+        self.assertFalse(touches_a_wall(path))
+        self.assertGreater(len(travel), 2, 'the word should need pen-up travel')
+
+        try:
+            rospy.wait_for_service('/turtlesim/save_canvas', timeout=5)
+        except rospy.ROSException:
+            self.skipTest('the real turtlesim cannot save its canvas')
+        path_png = os.path.join(tempfile.mkdtemp(), 'word.png')
+        rospy.set_param('/turtlesim/canvas_png', path_png)
+        self.assertTrue(rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)().success)
+        image = QImage(path_png)
+        for a, b in travel:
+            for i in range(1, 20):
+                q = (a[0] + (b[0] - a[0]) * i / 20, a[1] + (b[1] - a[1]) * i / 20)
+                if min(distance_to_polyline(q, s) for s in strokes) > 0.15:
+                    self.assertEqual(pixel(image, *q), BACKGROUND, f'pen-up line at {q}')
+        for stroke in strokes:
+            for a, b in zip(stroke, stroke[1:]):
+                mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+                self.assertEqual(pixel(image, *mid), PEN, f'no stroke at {mid}')
+
+
+if __name__ == '__main__':
+    rostest.rosrun('turtle_letters', 'feedback_letters', FeedbackLetters)
