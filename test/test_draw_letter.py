@@ -13,7 +13,7 @@ import rostest
 from rosgraph_msgs.msg import Log
 from turtlesim.msg import Pose
 
-from path_checks import LAB_N, touches_a_wall, vertex_errors, worst_distance_from
+from turtle_letters.geometry import LAB_N, touches_a_wall, vertex_errors, worst_distance_from
 TOLERANCE = 0.05        # m: path and vertices
 HEADING_TOLERANCE = 0.05
 PUBLISH_P = ['rostopic', 'pub', '-1', '/chatter', 'std_msgs/String', "data: 'P'"]

@@ -12,7 +12,7 @@ import rostest
 from std_msgs.msg import String
 from turtlesim.msg import Pose
 
-from path_checks import LAB_N
+from turtle_letters.geometry import LAB_N
 from processes import LogWatch, NodeProcess, cpu_seconds, node_pid, rss_mb, simulator
 
 # Feedback mode at higher speeds draws the N in seconds; the timing of the

@@ -11,7 +11,7 @@ import rosnode
 import rostest
 from turtlesim.msg import Pose
 
-from path_checks import LAB_N, touches_a_wall, vertex_errors, worst_distance_from
+from turtle_letters.geometry import LAB_N, touches_a_wall, vertex_errors, worst_distance_from
 from terminal import Terminal
 
 

@@ -38,3 +38,10 @@ source_workspace() {
     return 1
   fi
 }
+
+# Qt (the simulator, the picture checks) warns when this is unset; give it
+# the folder it would pick anyway.
+if [ -z "${XDG_RUNTIME_DIR:-}" ]; then
+  export XDG_RUNTIME_DIR="/tmp/runtime-$(id -u)"
+  mkdir -p -m 700 "$XDG_RUNTIME_DIR"
+fi

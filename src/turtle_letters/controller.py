@@ -108,7 +108,7 @@ class TurtleController:
         s = self.settings
         executor = EXECUTORS[mode](primitive, s.linear_speed, s.angular_speed)
         rospy.loginfo('%s: start at %s', _describe(primitive), _pose_text(self._latest_pose))
-        command = executor.start()
+        command = executor.start(self._latest_pose)
         while command is not None:
             self._publish(command)
             command = executor.update(self._next_pose())

@@ -64,7 +64,8 @@ class TimedPrimitive:
         speed = self.sign * min(self.speed, remaining / SIM_TICK)
         return Command(angular=speed) if self.turning else Command(linear_x=speed)
 
-    def start(self) -> Optional[Command]:
+    def start(self, pose: PoseSample) -> Optional[Command]:
+        """The first command, sent at once (the pose is not needed)."""
         return self._command()
 
     def update(self, pose: PoseSample) -> Optional[Command]:
@@ -85,11 +86,9 @@ class FeedbackPrimitive:
         self.turn_left = primitive.angle if isinstance(primitive, Turn) else 0.0
         self.last_theta = None
 
-    def start(self) -> Optional[Command]:
-        return None if self._settled() else Command()
-
-    def _settled(self) -> bool:
-        return isinstance(self.primitive, Turn) and abs(self.turn_left) < 1e-9
+    def start(self, pose: PoseSample) -> Optional[Command]:
+        """The first command, from the latest pose, sent at once."""
+        return self.update(pose)
 
     def update(self, pose: PoseSample) -> Optional[Command]:
         if self.last_theta is not None:

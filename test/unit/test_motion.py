@@ -15,6 +15,11 @@ def f32(value):
     return struct.unpack('f', struct.pack('f', value))[0]
 
 
+def sample(turtle):
+    return PoseSample(f32(turtle.x), f32(turtle.y), f32(turtle.theta),
+                      f32(turtle.linear_speed), f32(turtle.angular))
+
+
 def run(primitives, mode, turtle, late_every=0, linear=1.0, angular=0.25):
     """Drive `turtle` through `primitives`; every `late_every`-th command misses
     its tick (the simulator applies the previous one once more). Returns the
@@ -23,7 +28,7 @@ def run(primitives, mode, turtle, late_every=0, linear=1.0, angular=0.25):
     tick = 0
     for primitive in primitives:
         executor = EXECUTORS[mode](primitive, linear, angular)
-        command = executor.start()
+        command = executor.start(sample(turtle))
         while command is not None:
             tick += 1
             late = late_every and tick % late_every == 0
@@ -33,9 +38,7 @@ def run(primitives, mode, turtle, late_every=0, linear=1.0, angular=0.25):
             if late:
                 turtle.command(*command, now=tick)
             track.append((turtle.x, turtle.y))
-            command = executor.update(PoseSample(
-                f32(turtle.x), f32(turtle.y), f32(turtle.theta),
-                f32(turtle.linear_speed), f32(turtle.angular)))
+            command = executor.update(sample(turtle))
             assert tick < 100000, 'the primitive never ended'
         turtle.command(0.0, 0.0, 0.0, now=tick)
         turtle.step(now=tick)
@@ -97,7 +100,7 @@ def test_feedback_turns_the_long_way_when_the_plan_says_so():
     turtle = Turtle('t', CENTRE, CENTRE, math.pi / 2)
     angles = []
     executor = EXECUTORS['feedback'](Turn(5 * math.pi / 4, -math.pi / 4), 1.0, 0.25)
-    command = executor.start()
+    command = executor.start(sample(turtle))
     while command is not None:
         turtle.command(*command, now=0)
         turtle.step(now=0)

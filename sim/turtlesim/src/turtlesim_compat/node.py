@@ -134,10 +134,11 @@ class TurtlesimNode:
                 if clamped_from:
                     rospy.logwarn('Oh no! I hit the wall! (Clamping from [x=%f, y=%f])',
                                   *clamped_from)
-                pose = Pose(turtle.x, turtle.y, turtle.theta, turtle.linear_speed, turtle.angular)
                 endpoints = self._endpoints[name]
-                endpoints.pose.publish(pose)
-                endpoints.colour.publish(Color(*self._canvas.colour_at(turtle.x, turtle.y)))
+                endpoints.pose.publish(Pose(turtle.x, turtle.y, turtle.theta,
+                                            turtle.linear_speed, turtle.angular))
+                if endpoints.colour.get_num_connections():    # reading a pixel costs
+                    endpoints.colour.publish(Color(*self._canvas.colour_at(turtle.x, turtle.y)))
                 if segments:
                     self._canvas.draw(segments)
                     self.changed = True

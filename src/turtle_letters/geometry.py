@@ -1,8 +1,10 @@
-"""Geometry for judging a recorded turtle path against the ideal strokes."""
+"""Judging a recorded turtle path against the ideal strokes. No ROS here:
+the tests and the benchmark both use it."""
 import math
 
-WORLD_SIZE = 499 / 45.0
-# The lab's ideal N from the turtle's start pose (the figures of the lab).
+from .plan import WORLD_SIZE
+
+# The lab's ideal N from the turtle's start pose (the lab's own figures).
 LAB_N = [(5.5444, 5.5444), (5.5444, 8.5444), (8.0193, 6.0696), (8.0193, 9.0696)]
 
 

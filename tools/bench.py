@@ -1,0 +1,360 @@
+"""`make bench`: how accurate, fast and cheap a drawing is.
+
+Runs the real nodes headless on a private roscore: the simulator (the real
+turtlesim where installed, else the bundled one) and the controller,
+triggered over /chatter, in timed and feedback mode, on an idle machine and
+with every core busy, several times each. Writes a table to the terminal,
+bench-results/bench.json (every figure, the machine, the simulator) and
+bench-results/bench.png (ideal strokes and recorded paths, corners enlarged).
+
+Usage: bench.py [--reps N] [--letter N] [--modes timed,feedback] [--loads idle,loaded]
+"""
+import argparse
+import json
+import math
+import os
+import platform
+import signal
+import statistics
+import subprocess
+import sys
+import threading
+import time
+
+PORT = 11499                      # a master of our own, away from 11311
+os.environ['ROS_MASTER_URI'] = f'http://127.0.0.1:{PORT}'
+
+import rospy  # noqa: E402  (after the master URI is chosen)
+from geometry_msgs.msg import Twist  # noqa: E402
+from std_msgs.msg import String  # noqa: E402
+from std_srvs.srv import Empty  # noqa: E402
+from turtlesim.msg import Pose as PoseMsg  # noqa: E402
+from turtlesim.srv import Spawn  # noqa: E402
+
+from turtle_letters.geometry import distance_to_polyline, vertex_errors  # noqa: E402
+from turtle_letters.plan import Layout, Pose, glyph_for, glyph_strokes  # noqa: E402
+
+TARGETS = {  # figure -> (limit, which runs it applies to)
+    'vertex_max_mm': {('timed', 'idle'): 8.0, ('timed', 'loaded'): 10.0,
+                      ('feedback', 'idle'): 1.0, ('feedback', 'loaded'): 1.0},
+    'controller_cpu_pct': 3.0,
+    'cmd_vel_per_s': 100.0,
+    'latency_ms': 10.0,
+}
+LAB_DRAWING_S = 40.9
+SIM_RATE_HZ = 62.5
+
+
+def cpu_seconds(pid):
+    with open(f'/proc/{pid}/stat') as f:
+        fields = f.read().rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+
+
+def rss_mb(pid):
+    with open(f'/proc/{pid}/status') as f:
+        return next(int(line.split()[1]) / 1024 for line in f if line.startswith('VmRSS:'))
+
+
+class Processes:
+    """Everything the bench starts, stopped by stop_all() whatever happens."""
+
+    def __init__(self, log_dir):
+        self.log_dir = log_dir
+        self.running = []
+
+    def start(self, name, *command, **env):
+        log = open(os.path.join(self.log_dir, f'{name}.log'), 'w')
+        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
+                                   stdin=subprocess.DEVNULL, env=dict(os.environ, **env))
+        self.running.append(process)
+        return process
+
+    def stop(self, process, sig=signal.SIGINT):
+        if process.poll() is None:
+            process.send_signal(sig)
+            try:
+                process.wait(15)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+        if process in self.running:
+            self.running.remove(process)
+
+    def stop_all(self):
+        for process in reversed(list(self.running)):
+            self.stop(process)
+
+
+class Load:
+    """One busy loop per core; each also ends by itself after `limit` s."""
+
+    def __init__(self, processes, limit):
+        self.children = [processes.start(f'load{i}', 'timeout', str(limit), sys.executable, '-c',
+                                         'while True: pass') for i in range(os.cpu_count())]
+        self.processes = processes
+
+    def stop(self):
+        for child in self.children:
+            self.processes.stop(child, signal.SIGTERM)
+
+
+class Recorder:
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.reset()
+        rospy.Subscriber('/turtle1/pose', PoseMsg, self.on_pose, queue_size=10000,
+                         tcp_nodelay=True)
+        rospy.Subscriber('/turtle1/cmd_vel', Twist, self.on_cmd_vel, queue_size=10000,
+                         tcp_nodelay=True)
+
+    def reset(self):
+        with getattr(self, 'lock', threading.Lock()):
+            self.poses, self.commands = [], []
+
+    def on_pose(self, msg):
+        with self.lock:
+            self.poses.append((time.time(), msg))
+
+    def on_cmd_vel(self, msg):
+        moving = bool(msg.linear.x or msg.linear.y or msg.angular.z)
+        with self.lock:
+            self.commands.append((time.time(), moving))
+
+
+def wait_for(condition, timeout, what):
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        if condition():
+            return
+        time.sleep(0.02)
+    raise RuntimeError(f'timed out waiting for {what}')
+
+
+def ideal_strokes(letter, size):
+    start = Pose(5.544445, 5.544445, 0.0)
+    place = Layout((start.x, start.y), size).reserve(letter)[0][0]
+    return glyph_strokes(glyph_for(letter), place, size)
+
+
+def one_run(args, processes, recorder, chatter, sim_pid, mode):
+    rospy.ServiceProxy('/reset', Empty)()
+    controller = processes.start(
+        'controller', 'rosrun', 'turtle_letters', 'turtle_controller.py',
+        f'_mode:={mode}', f'_letter:={args.letter}', f'_size:={args.size}')
+    try:
+        wait_for(lambda: chatter.get_num_connections() > 0, 30, 'the controller')
+        time.sleep(1.0)                              # its pose subscription settles
+        recorder.reset()
+        sim_cpu0 = cpu_seconds(sim_pid)
+        ctl_cpu0 = cpu_seconds(controller.pid)
+        t_trigger = time.time()
+        chatter.publish(String('P'))
+
+        def finished():
+            with recorder.lock:
+                moving = [t for t, m in recorder.commands if m]
+            return moving and time.time() - moving[-1] > 1.5
+        wait_for(finished, 300, 'the drawing to end')
+        with recorder.lock:
+            commands = list(recorder.commands)
+            poses = list(recorder.poses)
+        t_end_wall = time.time()
+        ctl_cpu = cpu_seconds(controller.pid) - ctl_cpu0
+        sim_cpu = cpu_seconds(sim_pid) - sim_cpu0
+    finally:
+        processes.stop(controller)
+
+    t_first = next(t for t, m in commands if m)
+    t_last = max(t for t, m in commands if m)
+    t_stop = next((t for t, m in commands if t > t_last and not m), t_last)
+    drawing = t_stop - t_first
+    during = [(t, p) for t, p in poses if t_first <= t <= t_stop + 0.1]
+    path = [(p.x, p.y) for t, p in poses if t >= t_trigger]
+    strokes = ideal_strokes(args.letter, args.size)
+    vertices = [v for s in strokes for v in s]
+    end = poses[-1][1]
+    span = t_end_wall - t_trigger
+    return {
+        'latency_ms': (t_first - t_trigger) * 1000,
+        'drawing_s': drawing,
+        'vertex_mm': [e * 1000 for e in vertex_errors(path, vertices)],
+        'vertex_max_mm': max(vertex_errors(path, vertices)) * 1000,
+        'path_max_mm': max(min(distance_to_polyline(q, s) for s in strokes) for q in path) * 1000,
+        'final_mm': math.hypot(end.x - vertices[-1][0], end.y - vertices[-1][1]) * 1000,
+        'controller_cpu_pct': 100 * ctl_cpu / span,
+        'cmd_vel_per_s': len([1 for t, _ in commands if t_first <= t <= t_stop]) / drawing,
+        'sim_rate_hz': (len(during) - 1) / (during[-1][0] - during[0][0]),
+        'sim_cpu_pct': 100 * sim_cpu / span,
+        'path': path,
+    }
+
+
+def simulator_figures(processes, sim_pid, recorder):
+    """Pose rate and CPU of an idle simulator, then with ten moving turtles."""
+    rospy.ServiceProxy('/reset', Empty)()
+    time.sleep(1.0)
+    recorder.reset()
+    cpu0, t0 = cpu_seconds(sim_pid), time.time()
+    time.sleep(10.0)
+    with recorder.lock:
+        stamps = [t for t, _ in recorder.poses]
+    idle = {'rate_hz': (len(stamps) - 1) / (stamps[-1] - stamps[0]),
+            'cpu_pct': 100 * (cpu_seconds(sim_pid) - cpu0) / (time.time() - t0),
+            'rss_mb': rss_mb(sim_pid)}
+    spawn = rospy.ServiceProxy('/spawn', Spawn)
+    publishers = [rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=1)]
+    for i in range(9):
+        name = spawn(1.0 + i, 2.0, 0.0, '').name
+        publishers.append(rospy.Publisher(f'/{name}/cmd_vel', Twist, queue_size=1))
+    twist = Twist()
+    twist.linear.x, twist.angular.z = 0.5, 0.5
+    time.sleep(1.0)
+    cpu0, t0 = cpu_seconds(sim_pid), time.time()
+    while time.time() - t0 < 10.0:
+        for publisher in publishers:
+            publisher.publish(twist)
+        time.sleep(0.1)
+    ten = {'cpu_pct': 100 * (cpu_seconds(sim_pid) - cpu0) / (time.time() - t0),
+           'rss_mb': rss_mb(sim_pid)}
+    for publisher in publishers:
+        publisher.unregister()
+    rospy.ServiceProxy('/reset', Empty)()
+    return {'idle': idle, 'ten_moving': ten}
+
+
+def summarise(runs):
+    keys = ['latency_ms', 'drawing_s', 'vertex_max_mm', 'path_max_mm', 'final_mm',
+            'controller_cpu_pct', 'cmd_vel_per_s', 'sim_rate_hz', 'sim_cpu_pct']
+    summary = {}
+    for key in keys:
+        values = [r[key] for r in runs]
+        worst = min(values) if key == 'sim_rate_hz' else max(values)
+        summary[key] = {'median': statistics.median(values), 'worst': worst}
+    return summary
+
+
+def limit_for(key, mode, load):
+    target = TARGETS.get(key)
+    return target.get((mode, load)) if isinstance(target, dict) else target
+
+
+def table(results, sim):
+    lines = []
+    header = (f"{'mode':9}{'load':8}{'latency ms':>12}{'drawing s':>11}{'vertex mm':>11}"
+              f"{'path mm':>9}{'final mm':>10}{'ctl CPU %':>11}{'cmd_vel/s':>11}"
+              f"{'sim Hz':>8}{'sim CPU %':>11}")
+    lines.append(header)
+    lines.append('-' * len(header))
+    for group in results['groups']:
+        mode, load, s = group['mode'], group['load'], group['summary']
+        for stat in ('median', 'worst'):
+            cells = []
+            for key, width, fmt in [('latency_ms', 12, '.1f'), ('drawing_s', 11, '.2f'),
+                                    ('vertex_max_mm', 11, '.3f'), ('path_max_mm', 9, '.2f'),
+                                    ('final_mm', 10, '.3f'), ('controller_cpu_pct', 11, '.2f'),
+                                    ('cmd_vel_per_s', 11, '.1f'), ('sim_rate_hz', 8, '.2f'),
+                                    ('sim_cpu_pct', 11, '.1f')]:
+                value = s[key][stat]
+                limit = limit_for(key, mode, load)
+                bad = limit is not None and value > limit
+                if key == 'drawing_s' and load == 'idle' and mode == 'timed':
+                    bad = abs(value - LAB_DRAWING_S) > 0.5
+                if key == 'sim_rate_hz' and load == 'idle':
+                    bad = abs(value - SIM_RATE_HZ) > SIM_RATE_HZ * 0.01
+                text = format(value, fmt) + ('!' if bad else ' ')
+                cells.append(text.rjust(width))
+            label = f'{mode:9}{load:8}' if stat == 'median' else f"{'  worst':17}"
+            lines.append(label + ''.join(cells))
+    sim_f = results['simulator_figures']
+    lines.append('')
+    lines.append(f"simulator ({sim}): idle {sim_f['idle']['rate_hz']:.2f} Hz, "
+                 f"{sim_f['idle']['cpu_pct']:.1f}% CPU, {sim_f['idle']['rss_mb']:.0f} MB; "
+                 f"ten moving turtles {sim_f['ten_moving']['cpu_pct']:.1f}% CPU, "
+                 f"{sim_f['ten_moving']['rss_mb']:.0f} MB")
+    lines.append('Each group: median row, then worst over the repetitions. "!" marks a figure '
+                 'outside its target.')
+    lines.append('Targets: vertex <= 8 mm timed idle, <= 10 mm timed loaded, <= 1 mm feedback; '
+                 'drawing 40.9 s timed idle; latency <= 10 ms; controller CPU <= 3%; '
+                 'cmd_vel <= 100/s; simulator 62.5 Hz +-1% idle.')
+    return '\n'.join(lines)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--reps', type=int, default=3)
+    parser.add_argument('--letter', default='N')
+    parser.add_argument('--size', type=float, default=3.0)
+    parser.add_argument('--modes', default='timed,feedback')
+    parser.add_argument('--loads', default='idle,loaded')
+    parser.add_argument('--out', default='bench-results')
+    args = parser.parse_args()
+    args.letter = args.letter.upper()
+    if glyph_for(args.letter) is None or len(args.letter) != 1:
+        parser.error(f'--letter {args.letter!r}: one of A-Z, 0-9')
+    os.makedirs(args.out, exist_ok=True)
+    sim_kind = open(os.path.join(os.environ['WS'], '.simulator')).read().strip()
+
+    processes = Processes(args.out)
+    loads = []
+    try:
+        processes.start('roscore', 'roscore', '-p', str(PORT))
+        sim = processes.start('turtlesim', 'rosrun', 'turtlesim', 'turtlesim_node',
+                              QT_QPA_PLATFORM='offscreen')
+        time.sleep(2.0)
+        rospy.init_node('bench', disable_signals=True)
+        rospy.wait_for_service('/reset', timeout=30)
+        recorder = Recorder()
+        chatter = rospy.Publisher('/chatter', String, queue_size=10)
+        print(f'bench: simulator {sim_kind}, {os.cpu_count()} cores; measuring the idle simulator...',
+              flush=True)
+        results = {'simulator_figures': simulator_figures(processes, sim.pid, recorder),
+                   'groups': []}
+        for load in args.loads.split(','):
+            if load == 'loaded':
+                loads.append(Load(processes, limit=3600))
+            for mode in args.modes.split(','):
+                runs = []
+                for rep in range(args.reps):
+                    print(f'bench: {mode} {load} run {rep + 1}/{args.reps}...', flush=True)
+                    runs.append(one_run(args, processes, recorder, chatter, sim.pid, mode))
+                results['groups'].append({'mode': mode, 'load': load, 'runs': runs,
+                                          'summary': summarise(runs)})
+            for load_process in loads:
+                load_process.stop()
+            loads = []
+    finally:
+        for load_process in loads:
+            load_process.stop()
+        rospy.signal_shutdown('bench done')
+        processes.stop_all()
+
+    results['machine'] = {
+        'cores': os.cpu_count(), 'cpu': _cpu_model(), 'kernel': platform.release(),
+        'python': platform.python_version(), 'ros': os.environ.get('ROS_DISTRO', 'debian'),
+        'simulator': sim_kind, 'letter': args.letter, 'size_m': args.size, 'reps': args.reps,
+        'date': time.strftime('%Y-%m-%d %H:%M:%S'),
+    }
+    text = table(results, sim_kind)
+    print('\n' + text)
+    with open(os.path.join(args.out, 'bench.txt'), 'w') as f:
+        f.write(text + '\n')
+    paths = {(g['mode'], g['load']): [r.pop('path') for r in g['runs']] for g in results['groups']}
+    with open(os.path.join(args.out, 'bench.json'), 'w') as f:
+        json.dump(results, f, indent=1)
+    picture = os.path.join(args.out, 'bench.png')
+    from bench_picture import draw
+    draw(picture, ideal_strokes(args.letter, args.size), paths)
+    print(f'\nbench: wrote {args.out}/bench.json, bench.txt and bench.png')
+
+
+def _cpu_model():
+    try:
+        with open('/proc/cpuinfo') as f:
+            return next(line.split(':', 1)[1].strip() for line in f if line.startswith('model name'))
+    except (OSError, StopIteration):
+        return platform.processor()
+
+
+if __name__ == '__main__':
+    main()
