@@ -51,20 +51,6 @@ def simulator():
     return NodeProcess('turtlesim', 'turtlesim_node', QT_QPA_PLATFORM='offscreen')
 
 
-def cpu_seconds(pid):
-    """User + system CPU time of a process (and its exec'd child is itself)."""
-    with open(f'/proc/{pid}/stat') as f:
-        fields = f.read().rsplit(')', 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
-
-
-def rss_mb(pid):
-    with open(f'/proc/{pid}/status') as f:
-        for line in f:
-            if line.startswith('VmRSS:'):
-                return int(line.split()[1]) / 1024.0
-    return 0.0
-
 
 def node_pid(name):
     """The pid a running node reports for itself over its XML-RPC API."""

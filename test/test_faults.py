@@ -2,6 +2,7 @@
 """Bad input and faults, with real nodes: junk on /chatter, a trigger burst,
 the start order, the simulator dying mid-drawing, SIGTERM mid-drawing."""
 import math
+import os
 import signal
 import threading
 import time
@@ -13,7 +14,8 @@ from std_msgs.msg import String
 from turtlesim.msg import Pose
 
 from turtle_letters.geometry import LAB_N
-from processes import LogWatch, NodeProcess, cpu_seconds, node_pid, rss_mb, simulator
+from processes import LogWatch, NodeProcess, node_pid, simulator
+from turtle_letters.procstat import cpu_seconds, rss_mb
 
 # Feedback mode at higher speeds draws the N in seconds; the timing of the
 # lab's mode is not what these tests are about.
@@ -171,7 +173,6 @@ class Faults(unittest.TestCase):
         time.sleep(0.5)
         self.assertTrue(self.moving_since(time.time() - 0.2), 'not drawing')
         t_signal = time.time()
-        import os
         os.kill(pid, sig)
         ctl.process.wait(15)
         exited = time.time()

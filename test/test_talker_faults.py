@@ -11,7 +11,8 @@ import rospy
 import rostest
 from std_msgs.msg import String
 
-from processes import LogWatch, NodeProcess, cpu_seconds, node_pid
+from processes import LogWatch, NodeProcess, node_pid
+from turtle_letters.procstat import cpu_seconds
 from terminal import Terminal
 
 TALKER = '/talker'

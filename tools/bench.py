@@ -33,6 +33,7 @@ from turtlesim.srv import Spawn  # noqa: E402
 
 from turtle_letters.geometry import distance_to_polyline, vertex_errors  # noqa: E402
 from turtle_letters.plan import Layout, Pose, glyph_for, glyph_strokes  # noqa: E402
+from turtle_letters.procstat import cpu_seconds, rss_mb  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
     'vertex_max_mm': {('timed', 'idle'): 8.0, ('timed', 'loaded'): 10.0,
@@ -44,16 +45,6 @@ TARGETS = {  # figure -> (limit, which runs it applies to)
 LAB_DRAWING_S = 40.9
 SIM_RATE_HZ = 62.5
 
-
-def cpu_seconds(pid):
-    with open(f'/proc/{pid}/stat') as f:
-        fields = f.read().rsplit(')', 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
-
-
-def rss_mb(pid):
-    with open(f'/proc/{pid}/status') as f:
-        return next(int(line.split()[1]) / 1024 for line in f if line.startswith('VmRSS:'))
 
 
 class Processes:

@@ -17,7 +17,7 @@ and answer with the command for the next tick.
 import math
 from typing import NamedTuple, Optional
 
-from .plan import Line, Turn, wrap
+from .plan import Turn, wrap
 
 SIM_TICK = 0.016            # turtlesim's fixed step, seconds
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex

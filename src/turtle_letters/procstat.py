@@ -1,0 +1,19 @@
+"""CPU time and memory of a process, from /proc (Linux). No ROS here: the
+fault tests and the benchmark both measure nodes with it."""
+import os
+
+
+def cpu_seconds(pid):
+    """User + system CPU time the process has used so far."""
+    with open(f'/proc/{pid}/stat') as f:
+        fields = f.read().rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+
+
+def rss_mb(pid):
+    """Resident memory, MB."""
+    with open(f'/proc/{pid}/status') as f:
+        for line in f:
+            if line.startswith('VmRSS:'):
+                return int(line.split()[1]) / 1024.0
+    return 0.0
