@@ -7,6 +7,7 @@ the simulator's own 62.5 Hz and nothing ever waits in a loop of its own.
 import math
 import queue
 import threading
+import time
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -41,13 +42,15 @@ class TurtleController:
         self._request_lock = threading.Lock()
         self._layout = None
         self._pen_known_down = True
+        self._publish_lock = threading.Lock()
+        self._stopping = False                 # once set, only the stop goes out
         self._cmd_vel = rospy.Publisher('turtle1/cmd_vel', Twist, queue_size=10)
         self._set_pen = rospy.ServiceProxy('turtle1/set_pen', SetPen)
         self._clear = rospy.ServiceProxy('clear', Empty)
         rospy.Subscriber('turtle1/pose', PoseMsg, self._on_pose, queue_size=100, tcp_nodelay=True)
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=10)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
-        rospy.on_shutdown(self.stop)
+        rospy.on_shutdown(self._on_shutdown)
         self._worker = threading.Thread(target=self._work, name='drawing', daemon=True)
         self._worker.start()
         if settings.text:
@@ -127,7 +130,9 @@ class TurtleController:
     def _publish(self, command):
         twist = Twist()
         twist.linear.x, twist.linear.y, twist.angular.z = command
-        self._cmd_vel.publish(twist)
+        with self._publish_lock:
+            if not self._stopping:
+                self._cmd_vel.publish(twist)
 
     def stop(self):
         """Stop the turtle now rather than let it coast for turtlesim's 1 s timeout."""
@@ -135,6 +140,15 @@ class TurtleController:
             self._publish(STOP)
         except rospy.ROSException:
             pass    # already shut down: the shutdown hook sent the stop
+
+    def _on_shutdown(self):
+        """The last word on cmd_vel is a stop, even with a drawing under way."""
+        with self._publish_lock:
+            self._stopping = True
+            self._cmd_vel.publish(Twist())
+        # The publisher's queue thread sends it; give it a moment before
+        # rospy closes the topic (the turtle is at most one tick away).
+        time.sleep(0.1)
 
     def _pen(self, down):
         self._set_pen(*DEFAULT_PEN, 0 if down else 1)
