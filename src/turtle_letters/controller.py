@@ -22,6 +22,7 @@ from .settings import ParameterError, Settings
 
 DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own default pen
 POSE_TIMEOUT = 1.0                  # s without a pose: the simulator is gone
+TYPED_AHEAD = 32                    # typing mode: keys that may wait their turn
 
 
 class DrawingAborted(RuntimeError):
@@ -66,10 +67,8 @@ class TurtleController:
         data = msg.data
         shown = repr(data if len(data) <= 40 else data[:40] + '...')
         if self.settings.typing:
-            if len(data) == 1 and glyph_for(data) is not None:
-                self.request(data.upper(), 'a key')
-            elif data == ' ':
-                self.request(' ', 'a key')
+            if data == ' ' or (len(data) == 1 and glyph_for(data) is not None):
+                self.type_key(data.upper())
             else:
                 rospy.loginfo('chatter %s ignored: typing mode draws single letters or digits', shown)
         elif data == self.settings.trigger:
@@ -93,6 +92,15 @@ class TurtleController:
                 return
             self._busy.set()
         self._jobs.put(text)
+
+    def type_key(self, char):
+        """Typing mode: like a typewriter, keys typed ahead wait their turn."""
+        with self._request_lock:
+            if self._jobs.qsize() >= TYPED_AHEAD:
+                rospy.logwarn('Key %r ignored: %d keys are already waiting', char, TYPED_AHEAD)
+                return
+            self._busy.set()
+        self._jobs.put(char)
 
     # -- primitives ------------------------------------------------------------------
     def rotate(self, degrees):
@@ -189,7 +197,9 @@ class TurtleController:
                 self.stop()
                 rospy.logerr('Drawing of %r stopped: a turtlesim service failed: %s', text, e)
             finally:
-                self._busy.clear()
+                with self._request_lock:
+                    if self._jobs.empty():
+                        self._busy.clear()
 
     def draw(self, text):
         """Draw `text` at the next free places on the canvas."""
