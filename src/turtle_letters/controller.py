@@ -23,6 +23,7 @@ from .settings import ParameterError, Settings
 DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own default pen
 POSE_TIMEOUT = 1.0                  # s without a pose: the simulator is gone
 TYPED_AHEAD = 32                    # typing mode: keys that may wait their turn
+POSES_KEPT = 1000                   # 16 s of ticks: the drawing thread reads far faster
 
 
 class DrawingAborted(RuntimeError):
@@ -36,7 +37,7 @@ class TurtleController:
 
     def __init__(self, settings: Settings):
         self.settings = settings
-        self._poses = queue.Queue()
+        self._poses = queue.Queue(maxsize=POSES_KEPT)
         self._latest_pose = None
         self._jobs = queue.Queue()
         self._busy = threading.Event()        # set from request until the drawing ends
@@ -61,7 +62,9 @@ class TurtleController:
     def _on_pose(self, msg):
         sample = PoseSample(msg.x, msg.y, msg.theta, msg.linear_velocity, msg.angular_velocity)
         self._latest_pose = sample
-        self._poses.put(sample)
+        if self._poses.full():          # idle: nobody reads; keep only the newest
+            self._poses.get_nowait()
+        self._poses.put_nowait(sample)
 
     def _on_chatter(self, msg):
         data = msg.data
@@ -106,12 +109,14 @@ class TurtleController:
     def rotate(self, degrees):
         """Turn in place by `degrees` (counter-clockwise positive), timed."""
         pose = self._wait_for_pose()
+        self._drop_stale_poses()
         angle = math.radians(degrees)
         self._run(Turn(angle, wrap(pose.theta + angle)), 'timed')
 
     def move(self, meters):
         """Drive `meters` straight ahead, timed."""
         pose = self._wait_for_pose()
+        self._drop_stale_poses()
         self._run(Line(meters, pose.x + meters * math.cos(pose.theta),
                        pose.y + meters * math.sin(pose.theta), pose.theta), 'timed')
 
@@ -125,6 +130,11 @@ class TurtleController:
             command = executor.update(self._next_pose())
         self._publish(STOP)
         rospy.loginfo('%s: end at %s', _describe(primitive), _pose_text(self._latest_pose))
+
+    def _drop_stale_poses(self):
+        """Poses from before now would count ticks that are not ours."""
+        while not self._poses.empty():
+            self._poses.get_nowait()
 
     def _next_pose(self):
         try:
@@ -208,8 +218,7 @@ class TurtleController:
         if self._layout is None:
             self._layout = Layout((pose.x, pose.y), s.size)
         places, must_clear = self._layout.reserve(text)
-        while not self._poses.empty():        # poses from before the trigger are stale
-            self._poses.get_nowait()
+        self._drop_stale_poses()
         if must_clear:
             rospy.loginfo('The canvas is full: clearing it and starting again at the first place')
             self._clear()
