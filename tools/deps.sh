@@ -3,8 +3,9 @@
 set -eu
 source "$(dirname "$0")/env.sh"
 
-# Tools the tests and the headless run use, on every platform.
-COMMON="python3-pytest python3-pyqt5 tmux"
+# On every platform: the compiler catkin's top-level CMake project needs, and
+# what the tests and the headless run use.
+COMMON="g++ python3-pytest python3-pyqt5 tmux"
 if [ -d /opt/ros/noetic ]; then
   # Ubuntu 20.04 with ROS Noetic: the real turtlesim.
   WANT="$COMMON ros-noetic-ros-base ros-noetic-turtlesim ros-noetic-rostest ros-noetic-std-srvs
