@@ -44,8 +44,7 @@ if [ "$(cat "$WS/.simulator" 2>/dev/null)" != "$sim" ]; then
 fi
 
 echo "make build: workspace $WS, simulator: $sim"
-catkin_make -C "$WS" $force -DPYTHON_EXECUTABLE="$ROS_PYTHON" -DCATKIN_ENABLE_TESTING=ON \
-  -DCMAKE_BUILD_TYPE=Release >"$WS/build.log" 2>&1 || {
+catkin_make -C "$WS" $force "${CATKIN_ARGS[@]}" >"$WS/build.log" 2>&1 || {
   tail -n 40 "$WS/build.log" >&2
   echo "make build: catkin_make failed; the whole log is $WS/build.log" >&2
   exit 1

@@ -4,6 +4,9 @@
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WS="$REPO/.ws"                  # the catkin workspace `make build` makes
 ROS_PYTHON=/usr/bin/python3     # ROS 1 runs on the system Python 3 only
+# Every catkin_make call passes the same arguments: different ones make it
+# configure the workspace all over again.
+CATKIN_ARGS=(-DPYTHON_EXECUTABLE="$ROS_PYTHON" -DCATKIN_ENABLE_TESTING=ON -DCMAKE_BUILD_TYPE=Release)
 
 # A pyenv/conda/venv python3 first on PATH has no rospy; tools that say
 # `env python3` (rostest's hztest, for one) must find the system one.

@@ -18,7 +18,7 @@ echo "== unit tests: ${unit_dirs[*]}"
 
 echo "== integration tests (rostest)"
 # run_tests always exits 0; catkin_test_results is the gate.
-catkin_make -C "$WS" run_tests -j1 >"$WS/run_tests.log" 2>&1
+catkin_make -C "$WS" "${CATKIN_ARGS[@]}" run_tests -j1 >"$WS/run_tests.log" 2>&1
 grep -E "^(\[ROSTEST\]|\[Testcase|SUMMARY|  \* RESULT|  \* TESTS|  \* ERRORS|  \* FAILURES)" \
   "$WS/run_tests.log" || true
 catkin_test_results "$results" >"$WS/test_results.txt" 2>&1 || {
