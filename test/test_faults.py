@@ -4,6 +4,7 @@ the start order, the simulator dying mid-drawing, SIGTERM mid-drawing."""
 import math
 import os
 import signal
+import subprocess
 import threading
 import time
 import unittest
@@ -190,6 +191,22 @@ class Faults(unittest.TestCase):
 
     def test_5_ctrl_c_mid_drawing_stops_the_turtle(self):
         self.check_stops_at_once(signal.SIGINT)
+
+    def test_6_a_bad_parameter_stops_roslaunch_with_one_fatal_line(self):
+        self.logs.messages.clear()      # count only what this test's launches log
+        cases = {'letter:=%': "~letter is '%'", 'size:=0': '~size is 0',
+                 'size:=50': '~size is 50', 'mode:=fast': "~mode is 'fast'"}
+        for argument, expected in cases.items():
+            run = subprocess.run(
+                ['roslaunch', 'turtle_letters', 'draw_letter.launch', 'headless:=true',
+                 'talker:=false', argument], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                universal_newlines=True, timeout=60)
+            fatal = [line for line in run.stdout.splitlines() if '[FATAL]' in line]
+            self.assertNotEqual(run.returncode, 0, argument)
+            self.assertEqual(len(fatal), 1, run.stdout)
+            self.assertIn(expected, fatal[0])
+            self.assertIn('allowed', fatal[0])
+        self.assertEqual(self.logs.count('Ready', CONTROLLER), 0, 'a node started anyway')
 
 
 if __name__ == '__main__':
