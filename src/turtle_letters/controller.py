@@ -17,7 +17,7 @@ from turtlesim.msg import Pose as PoseMsg
 from turtlesim.srv import SetPen
 
 from .motion import EXECUTORS, STOP, PoseSample
-from .plan import DoesNotFit, Layout, Line, Pen, Pose, Turn, glyph_for, plan_glyph, wrap
+from .plan import DoesNotFit, Layout, Line, Pen, Pose, Turn, glyph_for, plan_glyph, undrawable, wrap
 from .settings import ParameterError, Settings
 
 DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own default pen
@@ -81,8 +81,7 @@ class TurtleController:
 
     def _on_text(self, msg):
         text = msg.data.upper()
-        bad = sorted({c for c in text if c != ' ' and glyph_for(c) is None})
-        if not text.strip() or bad:
+        if not text.strip() or undrawable(text):
             rospy.logwarn('~text %r refused: only A-Z, 0-9 and spaces can be drawn', msg.data[:40])
             return
         self.request(text, '~text')

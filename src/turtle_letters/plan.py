@@ -103,6 +103,11 @@ def glyph_for(char: str) -> Optional[Glyph]:
     return FONT.get(char.upper())
 
 
+def undrawable(text: str) -> List[str]:
+    """The characters of `text` with no glyph (spaces are fine: they advance)."""
+    return sorted({c for c in text if c != ' ' and glyph_for(c) is None})
+
+
 class Layout:
     """Letter places on the canvas, like a typewriter: the first at
     `first_place`, then to the right, then a new line below at the left

@@ -5,7 +5,7 @@ import math
 
 from .font import FONT
 from .motion import EXECUTORS
-from .plan import LARGEST_SIZE, TURN_DIRECTIONS, glyph_for
+from .plan import LARGEST_SIZE, TURN_DIRECTIONS, glyph_for, undrawable
 
 
 class ParameterError(ValueError):
@@ -51,7 +51,7 @@ class Settings:
         if glyph_for(self.letter) is None or len(self.letter) != 1:
             raise ParameterError(
                 f'~letter is {self.letter!r}; allowed: one of {"".join(sorted(FONT))}')
-        bad = sorted({c for c in self.text if c != ' ' and glyph_for(c) is None})
+        bad = undrawable(self.text)
         if bad:
             raise ParameterError(f'~text has characters with no glyph {bad}; allowed: A-Z, 0-9, space')
 
