@@ -5,8 +5,11 @@ draw_letter.launch runs this as a `<param command=...>`: if a value is bad it
 prints one line saying which, and exits non-zero, so roslaunch stops before
 starting anything and itself exits non-zero (a node that refuses its
 parameters cannot make roslaunch fail). On success it prints the settings.
-Usage: check_settings.py name:=value [...]; values typed `str` in the launch
-file are marked name:=str:value.
+
+Usage: check_settings.py name=HEX [...]: each value as given to roslaunch,
+after "str:", in hexadecimal (no quote or space can break the command line).
+A name marked name:str is a string parameter; the others are read the way
+roslaunch reads a <param> value.
 """
 import sys
 
@@ -18,11 +21,13 @@ from turtle_letters.settings import ParameterError, Settings
 def main(argv):
     values = {}
     for argument in argv:
-        name, _, value = argument.partition(':=')
-        if value.startswith('str:'):
-            values['~' + name] = value[len('str:'):]
+        name, _, encoded = argument.partition('=')
+        raw = bytes.fromhex(encoded).decode('utf-8')
+        raw = raw[len('str:'):] if raw.startswith('str:') else raw
+        if name.endswith(':str'):
+            values['~' + name[:-len(':str')]] = raw
         else:
-            values['~' + name] = convert_value(value, 'auto')
+            values['~' + name] = convert_value(raw, 'auto')
     try:
         settings = Settings(lambda name, default: values.get(name, default))
     except ParameterError as e:

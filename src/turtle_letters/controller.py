@@ -6,8 +6,10 @@ the simulator's own 62.5 Hz and nothing ever waits in a loop of its own.
 """
 import math
 import queue
+import sys
 import threading
 import time
+import traceback
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -16,14 +18,17 @@ from std_srvs.srv import Empty
 from turtlesim.msg import Pose as PoseMsg
 from turtlesim.srv import SetPen
 
+from .jobs import Jobs
 from .motion import EXECUTORS, STOP, PoseSample
 from .plan import DoesNotFit, Layout, Line, Pen, Pose, Turn, glyph_for, plan_glyph, undrawable, wrap
-from .settings import ParameterError, Settings
+from .settings import ParameterError, Settings, quote_unreadable
 
-DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own default pen
 POSE_TIMEOUT = 1.0                  # s without a pose: the simulator is gone
-TYPED_AHEAD = 32                    # typing mode: keys that may wait their turn
 POSES_KEPT = 1000                   # 16 s of ticks: the drawing thread reads far faster
+# Ignored messages can come at any rate (the tutorial talker sends "hello
+# world" at 10 Hz on chatter): the first is said, then one per period.
+IGNORED_LOG_PERIOD = 10.0
+THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
 
 
 class DrawingAborted(RuntimeError):
@@ -39,9 +44,7 @@ class TurtleController:
         self.settings = settings
         self._poses = queue.Queue(maxsize=POSES_KEPT)
         self._latest_pose = None
-        self._jobs = queue.Queue()
-        self._busy = threading.Event()        # set from request until the drawing ends
-        self._request_lock = threading.Lock()
+        self.jobs = Jobs()
         self._layout = None
         self._pen_known_down = True
         self._publish_lock = threading.Lock()
@@ -73,11 +76,13 @@ class TurtleController:
             if data == ' ' or (len(data) == 1 and glyph_for(data) is not None):
                 self.type_key(data.upper())
             else:
-                rospy.loginfo('chatter %s ignored: typing mode draws single letters or digits', shown)
+                rospy.loginfo_throttle(IGNORED_LOG_PERIOD, 'chatter %s ignored: typing mode draws '
+                                       'single letters or digits' + THROTTLED, shown)
         elif data == self.settings.trigger:
             self.request(self.settings.letter, f'trigger {shown}')
         else:
-            rospy.loginfo('chatter %s ignored: the trigger is %r', shown, self.settings.trigger)
+            rospy.loginfo_throttle(IGNORED_LOG_PERIOD, 'chatter %s ignored: the trigger is %r'
+                                   + THROTTLED, shown, self.settings.trigger)
 
     def _on_text(self, msg):
         text = msg.data.upper()
@@ -88,21 +93,15 @@ class TurtleController:
 
     def request(self, text, source):
         """Draw `text` unless a drawing is under way (then it is ignored, not queued)."""
-        with self._request_lock:
-            if self._busy.is_set():
-                rospy.loginfo('%s ignored: a drawing is under way', source)
-                return
-            self._busy.set()
-        self._jobs.put(text)
+        if not self.jobs.offer(text):
+            rospy.loginfo_throttle(IGNORED_LOG_PERIOD, '%s ignored: a drawing is under way'
+                                   + THROTTLED, source)
 
     def type_key(self, char):
         """Typing mode: like a typewriter, keys typed ahead wait their turn."""
-        with self._request_lock:
-            if self._jobs.qsize() >= TYPED_AHEAD:
-                rospy.logwarn('Key %r ignored: %d keys are already waiting', char, TYPED_AHEAD)
-                return
-            self._busy.set()
-        self._jobs.put(char)
+        if not self.jobs.offer_key(char):
+            rospy.logwarn_throttle(IGNORED_LOG_PERIOD, 'Key %r ignored: %d keys are already '
+                                   'waiting' + THROTTLED, char, self.jobs.typed_ahead)
 
     # -- primitives ------------------------------------------------------------------
     def rotate(self, degrees):
@@ -168,7 +167,8 @@ class TurtleController:
         time.sleep(0.1)
 
     def _pen(self, down):
-        self._set_pen(*DEFAULT_PEN, 0 if down else 1)
+        # Lowering the pen sets its colour too: the user's, not turtlesim's default.
+        self._set_pen(*self.settings.pen, 0 if down else 1)
         self._pen_known_down = down
 
     # -- drawing ---------------------------------------------------------------------
@@ -187,28 +187,32 @@ class TurtleController:
 
     def _work(self):
         while not rospy.is_shutdown():
-            try:
-                text = self._jobs.get(timeout=0.5)
-            except queue.Empty:
+            text = self.jobs.take(timeout=0.5)
+            if text is None:
                 continue
             try:
                 self.draw(text)
-            except DrawingAborted as e:
-                self.stop()
-                # The simulator may come back with a fresh canvas: start the
-                # layout again from wherever the turtle is then.
-                self._layout = None
-                self._pen_known_down = False
-                rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text, e)
             except DoesNotFit as e:
                 rospy.logerr('Refused: %s', e)
-            except rospy.ServiceException as e:
-                self.stop()
-                rospy.logerr('Drawing of %r stopped: a turtlesim service failed: %s', text, e)
+            except Exception as e:  # whatever it was, this thread must live on
+                self._abandon(text, e)
             finally:
-                with self._request_lock:
-                    if self._jobs.empty():
-                        self._busy.clear()
+                self.jobs.done()
+
+    def _abandon(self, text, error):
+        """Stop the turtle and forget the layout: the simulator may come back
+        with a fresh canvas, so the next drawing starts wherever the turtle is."""
+        self.stop()
+        self._layout = None
+        self._pen_known_down = False
+        if isinstance(error, DrawingAborted):
+            cause = str(error)
+        elif isinstance(error, rospy.ServiceException):
+            cause = f'a turtlesim service failed: {error}'
+        else:
+            cause = f'{type(error).__name__}: {error}'
+            rospy.logdebug('Drawing of %r failed:\n%s', text, traceback.format_exc())
+        rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text, cause)
 
     def draw(self, text):
         """Draw `text` at the next free places on the canvas."""
@@ -221,8 +225,7 @@ class TurtleController:
         if must_clear:
             rospy.loginfo('The canvas is full: clearing it and starting again at the first place')
             self._clear()
-        if not self._pen_known_down:
-            self._pen(True)
+        self._pen(True)
         rospy.loginfo('Drawing %r (%s mode)', text, s.mode)
         start = Pose(pose.x, pose.y, pose.theta)
         for char, place in zip(text, places):
@@ -250,7 +253,7 @@ def _pose_text(pose):
 
 
 def main():
-    rospy.init_node('turtlebot_controller')
+    rospy.init_node('turtlebot_controller', argv=quote_unreadable(sys.argv))
     try:
         settings = Settings(rospy.get_param)
     except ParameterError as e:

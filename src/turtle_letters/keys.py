@@ -1,13 +1,32 @@
-"""What the talker publishes for a key press. No ROS here."""
+"""From key presses to what the talker publishes. No ROS here.
+
+A terminal sends some keys as escape sequences: the arrows are ESC [ A..D,
+F1 is ESC O P, Alt+p is ESC p. Read byte by byte they would look like
+letters (F1 would send the trigger), so KeyDecoder drops every sequence, and
+a bare Esc too, before a key is looked up.
+"""
+import codecs
 import string
-from typing import Optional
+from typing import List, Optional
 
-# The lab's binding: P (either case) publishes the trigger "P".
-LAB_BINDINGS = {'p': 'P', 'P': 'P'}
 TYPEABLE = set(string.ascii_letters + string.digits + ' ')
+ENTER = '\n'
+ESC = '\x1b'
+# Seconds to wait for the rest of an escape sequence before taking a lone
+# ESC as the Esc key: terminals send a sequence in one write.
+ESCAPE_WAIT = 0.05
 
 
-def message_for(key: str, typing: bool = False) -> Optional[str]:
+def bindings(trigger: str) -> dict:
+    """The lab's key table: the trigger's own key (either case) publishes the
+    trigger; a trigger longer than one character, which no key can type, is
+    published by Enter."""
+    if len(trigger) == 1:
+        return {trigger.lower(): trigger, trigger.upper(): trigger}
+    return {ENTER: trigger}
+
+
+def message_for(key: str, typing: bool = False, trigger: str = 'P') -> Optional[str]:
     """The string to publish on chatter for `key`, or None to publish nothing.
 
     In typing mode every letter, digit and space is published (letters in
@@ -15,4 +34,47 @@ def message_for(key: str, typing: bool = False) -> Optional[str]:
     """
     if typing:
         return key.upper() if key in TYPEABLE else None
-    return LAB_BINDINGS.get(key)
+    return bindings(trigger).get(key)
+
+
+class KeyDecoder:
+    """Text read from a terminal, in chunks, to single keys, without the
+    escape sequences. Feed it what each read returned; when it says a
+    sequence is pending and nothing more comes within ESCAPE_WAIT, call
+    timeout(): the ESC was the Esc key, which is no key we publish."""
+
+    def __init__(self) -> None:
+        self._utf8 = codecs.getincrementaldecoder('utf-8')(errors='replace')
+        self._sequence = ''      # an escape sequence read so far
+
+    @property
+    def pending(self) -> bool:
+        return bool(self._sequence)
+
+    def feed(self, data: bytes) -> List[str]:
+        keys = []
+        for char in self._utf8.decode(data):
+            if self._sequence == ESC and char == ESC:
+                pass                    # a bare Esc, then another sequence
+            elif self._sequence:
+                self._sequence += char
+                if _sequence_complete(self._sequence):
+                    self._sequence = ''
+            elif char == ESC:
+                self._sequence = char
+            else:
+                keys.append(char)
+        return keys
+
+    def timeout(self) -> None:
+        self._sequence = ''
+
+
+def _sequence_complete(sequence: str) -> bool:
+    if len(sequence) == 2:
+        return sequence[1] not in '[O'          # ESC x: Alt+x
+    if sequence[1] == 'O':
+        return True                             # ESC O x: F1-F4
+    if sequence[:3] == ESC + '[[':
+        return len(sequence) == 4               # ESC [ [ x: the Linux console's F1-F5
+    return '\x40' <= sequence[-1] <= '\x7e'     # ESC [ parameters final: arrows, F5...

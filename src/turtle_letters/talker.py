@@ -2,7 +2,8 @@
 
 On a terminal it reads single key presses (cbreak mode: no Enter needed, and
 Ctrl-C still works) and puts the terminal back as it was when it ends, however
-it ends. Without a terminal it reads lines, so `echo P | rosrun ...` works.
+it ends. Without a terminal it reads its input the same way, a character a
+press and a newline an Enter, so `echo P | rosrun ...` works.
 """
 import os
 import select
@@ -10,14 +11,19 @@ import signal
 import sys
 import termios
 import threading
+import time
 import tty
 
 import rospy
 from std_msgs.msg import String
 
-from .keys import message_for
+from .keys import ESCAPE_WAIT, KeyDecoder, message_for
+from .settings import quote_unreadable
 
 WAKE_UP = 0.5   # s: how often a blocked wait looks whether ROS shut the node down
+KEPT_PRESSES = 32   # presses kept while nobody subscribes; later ones are dropped
+READ_SIZE = 4096    # bytes read at once; each read is handled before the next
+READY, TIMED_OUT, SHUTDOWN = 'ready', 'timed out', 'shutdown'
 
 
 class SignalPipe:
@@ -41,96 +47,125 @@ class SignalPipe:
         except BlockingIOError:
             pass
 
-    def wait(self, fd=None):
-        """Block until fd is readable (True) or shutdown is due (False)."""
+    def wait(self, fd=None, timeout=None):
+        """Block until fd is readable (READY), `timeout` seconds have passed
+        (TIMED_OUT) or shutdown is due (SHUTDOWN)."""
         watched = [self.fd] if fd is None else [fd, self.fd]
+        deadline = None if timeout is None else time.monotonic() + timeout
         while not rospy.is_shutdown():
-            readable, _, _ = select.select(watched, [], [], WAKE_UP)
+            wait = WAKE_UP if deadline is None else max(0.0, deadline - time.monotonic())
+            readable, _, _ = select.select(watched, [], [], min(wait, WAKE_UP))
             if self.fd in readable:
                 rospy.signal_shutdown(f'signal {os.read(self.fd, 1)[0]}')
-                return False
+                return SHUTDOWN
             if readable:
-                return True
-        return False
+                return READY
+            if deadline is not None and time.monotonic() >= deadline:
+                return TIMED_OUT
+        return SHUTDOWN
 
 
 class Talker(rospy.SubscribeListener):
     """Publishes `chatter` (std_msgs/String).
 
+    ~trigger (str, default "P"): what the trigger key publishes. The key is
+        the trigger's character, either case; a longer trigger is sent by Enter.
     ~typing (bool, default false): publish every letter, digit and space
-        typed, not only P.
-    Presses made while nobody subscribes are kept and sent to the first
-    subscriber, so a press made before the controller is up is not lost.
+        typed, not only the trigger.
+    Presses made while nobody subscribes (up to KEPT_PRESSES) are kept and
+    sent to the first subscriber, so a press made before the controller is
+    up is not lost.
     """
 
-    def __init__(self, typing=False):
+    def __init__(self, typing=False, trigger='P'):
         super().__init__()
         self.typing = typing
+        self.trigger = trigger
         self._lock = threading.Lock()
         self._pending = []
+        self._dropping = False
         self._publisher = rospy.Publisher('chatter', String, queue_size=10,
                                           subscriber_listener=self)
 
     def press(self, key):
-        message = message_for(key, self.typing)
+        message = message_for(key, self.typing, self.trigger)
         if message is None:
             return
         with self._lock:
             if self._publisher.get_num_connections() == 0:
-                self._pending.append(message)
-                rospy.loginfo('Nobody listens on %s yet: %r is kept until someone does',
-                              self._publisher.resolved_name, message)
+                self._keep(message)
                 return
         self._publisher.publish(String(message))
         rospy.loginfo('Published %r on %s', message, self._publisher.resolved_name)
 
+    def _keep(self, message):
+        if len(self._pending) >= KEPT_PRESSES:
+            if not self._dropping:
+                rospy.logwarn('Nobody listens on %s and %d presses are kept already: '
+                              'further presses are dropped until someone does',
+                              self._publisher.resolved_name, KEPT_PRESSES)
+            self._dropping = True
+            return
+        self._pending.append(message)
+        rospy.loginfo('Nobody listens on %s yet: %r is kept until someone does',
+                      self._publisher.resolved_name, message)
+
     def peer_subscribe(self, topic_name, topic_publish, peer_publish):
         with self._lock:
             pending, self._pending = self._pending, []
+            self._dropping = False
         for message in pending:
             peer_publish(String(message))
             rospy.loginfo('Published kept %r on %s', message, topic_name)
 
 
-def read_keys(talker, fd, prompt, signals):
+def pass_keys(talker, fd, signals):
+    """Hand every key read from fd to the talker, escape sequences dropped.
+    Returns at the end of input or at shutdown."""
+    decoder = KeyDecoder()
+    while True:
+        event = signals.wait(fd, ESCAPE_WAIT if decoder.pending else None)
+        if event == SHUTDOWN:
+            return
+        if event == TIMED_OUT:
+            decoder.timeout()
+            continue
+        data = os.read(fd, READ_SIZE)
+        if not data:
+            return
+        for key in decoder.feed(data):
+            talker.press(key)
+
+
+def read_terminal(talker, fd, prompt, signals):
     """Key presses from a terminal, in cbreak mode, restored however we leave."""
     saved = termios.tcgetattr(fd)
     try:
         tty.setcbreak(fd, termios.TCSANOW)
         prompt()
-        while signals.wait(fd):
-            data = os.read(fd, 64)
-            if not data:
-                break
-            for key in data.decode('utf-8', errors='replace'):
-                talker.press(key)
+        pass_keys(talker, fd, signals)
     finally:
         termios.tcsetattr(fd, termios.TCSADRAIN, saved)
 
 
-def read_lines(talker, fd, signals):
-    """Lines from a pipe or file; each character of a line counts as a press."""
-    buffered = b''
-    while signals.wait(fd):
-        data = os.read(fd, 4096)
-        if not data:
-            return
-        buffered += data
-        *lines, buffered = buffered.split(b'\n')
-        for line in lines:
-            for key in line.decode('utf-8', errors='replace').strip():
-                talker.press(key)
-
-
 def main():
-    rospy.init_node('talker', disable_signals=True)
+    rospy.init_node('talker', argv=quote_unreadable(sys.argv), disable_signals=True)
     signals = SignalPipe()
     typing = rospy.get_param('~typing', False)
     if not isinstance(typing, bool):
         rospy.logfatal('%s: ~typing is %r; allowed: true or false', rospy.get_name(), typing)
         raise SystemExit(2)
-    talker = Talker(typing)
-    what = 'a letter or digit to draw it' if typing else 'P to draw the letter'
+    trigger = rospy.get_param('~trigger', 'P')
+    if not isinstance(trigger, str) or not trigger.strip():
+        rospy.logfatal('%s: ~trigger is %r; allowed: a non-blank string', rospy.get_name(), trigger)
+        raise SystemExit(2)
+    talker = Talker(typing, trigger)
+    if typing:
+        what = 'a letter or digit to draw it'
+    elif len(trigger) == 1:
+        what = f'{trigger.upper()} to draw the letter'
+    else:
+        what = f'Enter to send {trigger!r} and draw the letter'
 
     try:
         fd = sys.stdin.fileno() if sys.stdin is not None else -1
@@ -145,9 +180,9 @@ def main():
         def prompt():
             sys.stdout.write(f'talker: press {what} (no Enter needed); Ctrl-C quits\n')
             sys.stdout.flush()
-        read_keys(talker, fd, prompt, signals)
+        read_terminal(talker, fd, prompt, signals)
     else:
-        read_lines(talker, fd, signals)
+        pass_keys(talker, fd, signals)
         if not rospy.is_shutdown():
             rospy.loginfo('End of input: no more keys to read; the talker stays up '
                           'until shut down (kept presses still go out)')

@@ -1,7 +1,7 @@
 """The controller's parameters: defaults, and one clear refusal per bad value."""
 import pytest
 
-from turtle_letters.settings import ParameterError, Settings
+from turtle_letters.settings import ParameterError, Settings, quote_unreadable
 
 
 def settings(**given):
@@ -39,3 +39,32 @@ def test_a_bad_value_is_refused_naming_it_and_what_is_allowed(name, value, allow
     assert allowed in message
     if name != 'text':
         assert repr(value) in message or f'{value:g}' in message
+
+
+def test_the_pen_defaults_to_turtlesims_and_takes_a_string_or_a_list():
+    assert settings().pen == (179, 184, 255, 3)
+    assert settings(pen='255 0 0 5').pen == (255, 0, 0, 5)
+    assert settings(pen=[0, 128, 0, 1]).pen == (0, 128, 0, 1)
+
+
+@pytest.mark.parametrize('value', ['255 0 0', '256 0 0 3', '0 0 0 0', 'red', [1, 2, 3, 4.5],
+                                   [1, 2, 3, True], '-1 0 0 3', 7])
+def test_a_bad_pen_is_refused(value):
+    with pytest.raises(ParameterError) as refused:
+        settings(pen=value)
+    assert str(refused.value).startswith(f'~pen is {value!r}; allowed: "r g b width"')
+
+
+def test_command_line_values_ros_cannot_store_become_strings():
+    argv = ['node', '_letter:=?', '_size:=~', '_text:=IT\'S', '_mode:=timed', '_size:=2.5',
+            '_when:=2024-01-01', '_n:=99999999999', 'chatter:=other', '__name:=x']
+    assert quote_unreadable(argv) == [
+        'node', "_letter:='?'", "_size:='~'", '_text:=IT\'S', '_mode:=timed', '_size:=2.5',
+        "_when:='2024-01-01'", "_n:='99999999999'", 'chatter:=other', '__name:=x']
+
+
+def test_a_quoted_value_reads_back_as_what_was_typed():
+    import yaml
+    for typed in ['?', "it's", '{a', '[1,', '~', ': x']:
+        argument = quote_unreadable([f'_text:={typed}'])[0]
+        assert yaml.safe_load(argument.partition(':=')[2]) == typed

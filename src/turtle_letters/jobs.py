@@ -1,0 +1,61 @@
+"""Which drawing requests are taken, and in what order. No ROS here.
+
+The lab draws one letter per trigger: a trigger (or a word) that comes while a
+drawing is waiting or under way is refused, not queued, so a burst of triggers
+draws once. Typed keys are different: like a typewriter, keys typed ahead of
+the turtle wait their turn, up to TYPED_AHEAD of them.
+"""
+import collections
+import threading
+from typing import Optional
+
+TYPED_AHEAD = 32
+
+
+class Jobs:
+    """Requests in, one drawing at a time out. Every decision is taken under
+    one lock, so a request can never slip in between a drawing's end and the
+    check of whether another one waits."""
+
+    def __init__(self, typed_ahead: int = TYPED_AHEAD) -> None:
+        self.typed_ahead = typed_ahead
+        self._changed = threading.Condition()
+        self._waiting = collections.deque()
+        self._drawing = False
+
+    @property
+    def idle(self) -> bool:
+        with self._changed:
+            return not self._drawing and not self._waiting
+
+    def offer(self, text: str) -> bool:
+        """A trigger or a word: taken only when nothing waits or is drawn."""
+        with self._changed:
+            if self._drawing or self._waiting:
+                return False
+            return self._append(text)
+
+    def offer_key(self, char: str) -> bool:
+        """A typed key: waits its turn unless `typed_ahead` keys already wait."""
+        with self._changed:
+            if len(self._waiting) >= self.typed_ahead:
+                return False
+            return self._append(char)
+
+    def _append(self, text: str) -> bool:
+        self._waiting.append(text)
+        self._changed.notify()
+        return True
+
+    def take(self, timeout: float) -> Optional[str]:
+        """The next thing to draw (it is then being drawn until done()), or
+        None if nothing came within `timeout` seconds."""
+        with self._changed:
+            if not self._changed.wait_for(lambda: self._waiting, timeout):
+                return None
+            self._drawing = True
+            return self._waiting.popleft()
+
+    def done(self) -> None:
+        with self._changed:
+            self._drawing = False

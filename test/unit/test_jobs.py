@@ -1,0 +1,76 @@
+"""The controller's job policy: one drawing per trigger, typed keys wait."""
+import threading
+import time
+
+from turtle_letters.jobs import Jobs
+
+
+def test_a_trigger_while_drawing_is_refused_and_the_next_one_after_is_taken():
+    jobs = Jobs()
+    assert jobs.idle
+    assert jobs.offer('N')
+    assert not jobs.offer('N')          # waiting
+    assert jobs.take(0.1) == 'N'
+    assert not jobs.idle
+    assert not jobs.offer('N')          # being drawn
+    jobs.done()
+    assert jobs.idle
+    assert jobs.offer('N')
+
+
+def test_typed_keys_wait_their_turn_up_to_the_limit():
+    jobs = Jobs(typed_ahead=3)
+    assert [jobs.offer_key(c) for c in 'ABCD'] == [True, True, True, False]
+    assert not jobs.offer('WORD')       # keys are waiting: a word is a trigger
+    assert [jobs.take(0.1) for _ in range(1)] == ['A']
+    assert jobs.offer_key('E')          # one drawn, so one more may wait
+    drawn = []
+    for _ in range(4):
+        jobs.done()
+        drawn.append(jobs.take(0.1))
+    assert drawn == ['B', 'C', 'E', None]
+
+
+def test_take_times_out_with_nothing_to_draw():
+    assert Jobs().take(0.05) is None
+
+
+def test_racing_triggers_are_taken_only_when_nothing_waits_or_is_drawn():
+    """Thousands of triggers from several threads while a worker draws: no
+    trigger is ever taken behind another or during a drawing, none that was
+    taken is lost, and the policy is idle at the end."""
+    jobs = Jobs()
+    taken, queued_meanwhile = [], []
+    senders_done = threading.Event()
+
+    def worker():
+        while not senders_done.is_set() or not jobs.idle:
+            text = jobs.take(0.01)
+            if text is None:
+                continue
+            taken.append(text)
+            time.sleep(0.0002)                  # drawing
+            queued_meanwhile.extend(jobs._waiting)
+            jobs.done()
+
+    accepted = []
+
+    def sender():
+        for _ in range(3000):
+            if jobs.offer('P'):
+                accepted.append('P')
+            time.sleep(0.0001)
+
+    drawer = threading.Thread(target=worker)
+    senders = [threading.Thread(target=sender) for _ in range(3)]
+    for t in [drawer] + senders:
+        t.start()
+    for t in senders:
+        t.join()
+    senders_done.set()
+    drawer.join(10)
+    assert not drawer.is_alive()
+    assert queued_meanwhile == []
+    assert len(taken) == len(accepted) > 1
+    assert jobs.idle
+    assert jobs.offer('P') and jobs.take(0.1) == 'P'
