@@ -16,12 +16,16 @@ from terminal import Terminal
 
 
 class LaunchInATerminal(unittest.TestCase):
-    def setUp(self):
-        rospy.init_node('launch_terminal_test', anonymous=True)
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('launch_terminal_test')
+
+    def launch(self, arguments=''):
         self.poses = []
         self.lock = threading.Lock()
         self.term = Terminal('stty -g > before; roslaunch turtle_letters draw_letter.launch '
-                             'headless:=true; stty -g > after; echo "LAUNCH" "ENDED $?"', cwd=True)
+                             f'headless:=true {arguments}; stty -g > after; '
+                             'echo "LAUNCH" "ENDED $?"', cwd=True)
         self.addCleanup(self.term.close)
 
     def on_pose(self, msg):
@@ -29,6 +33,7 @@ class LaunchInATerminal(unittest.TestCase):
             self.poses.append(msg)
 
     def test_press_p_draws_the_n_then_ctrl_c_ends_it_all(self):
+        self.launch()
         self.assertTrue(self.term.wait_for('talker: press P', 60), self.term.screen())
         rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
         rospy.Subscriber('/turtle1/pose', Pose, self.on_pose, queue_size=1000)
@@ -61,6 +66,23 @@ class LaunchInATerminal(unittest.TestCase):
         self.assertEqual(set(nodes) & set(rosnode.get_node_names()), set())
         self.assertEqual(self.term.read('after'), self.term.read('before'))
         self.assertNotIn('Traceback', self.term.screen())
+
+    def test_the_trigger_argument_reaches_the_keyboard(self):
+        self.launch('trigger:=Q mode:=feedback linear_speed:=3 angular_speed:=3')
+        self.assertTrue(self.term.wait_for('talker: press Q', 60), self.term.screen())
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        rospy.Subscriber('/turtle1/pose', Pose, self.on_pose, queue_size=1000)
+        self.assertTrue(self.term.wait_for("Ready: publish 'Q'", 30), self.term.screen())
+        self.term.send_keys('p')
+        time.sleep(2.0)
+        with self.lock:
+            self.assertFalse(any(p.linear_velocity or p.angular_velocity for p in self.poses),
+                             'the key P started a drawing although the trigger is Q')
+        self.term.send_keys('q')
+        self.assertTrue(self.term.wait_for("Drawing 'N'", 20), self.term.screen())
+        self.term.send_keys('C-c')
+        self.assertTrue(self.term.wait_for('LAUNCH ENDED', 30), self.term.screen())
+        self.assertEqual(self.term.read('after'), self.term.read('before'))
 
 
 if __name__ == '__main__':

@@ -64,6 +64,44 @@ class TalkerFaults(unittest.TestCase):
         self.assertEqual(self.logs.count('End of input', TALKER), 1)
         self.assert_idles_then_ends_cleanly(talker, pid, signal.SIGTERM)
 
+    def test_kept_presses_are_bounded(self):
+        read_end, write_end = os.pipe()
+        talker, pid = self.start_talker(read_end)
+        os.close(read_end)
+        os.write(write_end, b'P' * 100 + b'\n')
+        os.close(write_end)
+        self.assertTrue(self.logs.wait_for('End of input', 15, TALKER), talker.output())
+        heard = []
+        subscriber = rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
+        self.addCleanup(subscriber.unregister)
+        deadline = time.time() + 10
+        while len(heard) < 32 and time.time() < deadline:
+            time.sleep(0.05)
+        time.sleep(1.0)                 # more than 32 would have come by now
+        self.assertEqual(heard, ['P'] * 32)
+        self.assertEqual(self.logs.count('further presses are dropped', TALKER), 1)
+        self.assert_idles_then_ends_cleanly(talker, pid, signal.SIGTERM)
+
+    def test_a_line_without_end_is_read_as_it_comes(self):
+        heard = []
+        subscriber = rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
+        self.addCleanup(subscriber.unregister)
+        read_end, write_end = os.pipe()
+        talker, pid = self.start_talker(read_end)
+        os.close(read_end)
+        self.addCleanup(os.close, write_end)
+        deadline = time.time() + 20
+        while subscriber.get_num_connections() == 0 and time.time() < deadline:
+            time.sleep(0.05)
+        for _ in range(16):             # 1 MiB with no newline, then a press
+            os.write(write_end, b'x' * 65536)
+        os.write(write_end, b'P')
+        deadline = time.time() + 15
+        while not heard and time.time() < deadline:
+            time.sleep(0.05)
+        self.assertEqual(heard, ['P'], 'a press after a long unfinished line was not published')
+        self.assertTrue(talker.alive())
+
     def test_dev_null(self):
         talker, pid = self.start_talker(subprocess.DEVNULL)
         self.assertTrue(self.logs.wait_for('End of input', 15, TALKER), talker.output())

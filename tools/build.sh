@@ -14,37 +14,53 @@ for part in package.xml CMakeLists.txt setup.py README.md launch scripts src tes
   ln -sfn "$REPO/$part" "$WS/src/turtle_letters/$part"
 done
 
+without_workspace() {
+  # A path list without our own workspace's entries.
+  local entry kept=""
+  local IFS=:
+  for entry in $1; do
+    case "$entry" in "$WS"|"$WS"/*|"") ;; *) kept="${kept:+$kept:}$entry" ;; esac
+  done
+  echo "$kept"
+}
+
 installed_turtlesim() {
-  # Look in the installed ROS prefixes only, never in our own workspace.
-  local prefix
-  for prefix in ${CMAKE_PREFIX_PATH:+${CMAKE_PREFIX_PATH//:/ }} /usr; do
-    case "$prefix" in "$WS"*) continue ;; esac
-    [ -f "$prefix/share/turtlesim/package.xml" ] && return 0
+  # Where ROS itself would find turtlesim, leaving our workspace out: on the
+  # package path (a source or devel-space underlay puts its src/ there), then
+  # in the install prefixes, as catkin's find_package does.
+  local found prefix
+  found=$(ROS_PACKAGE_PATH=$(without_workspace "${ROS_PACKAGE_PATH:-}") \
+          rospack find turtlesim 2>/dev/null) && [ -n "$found" ] && { echo "$found"; return 0; }
+  for prefix in $(without_workspace "${CMAKE_PREFIX_PATH:-}" | tr : ' ') /usr; do
+    [ -f "$prefix/share/turtlesim/package.xml" ] && { echo "$prefix/share/turtlesim"; return 0; }
   done
   return 1
 }
 
-if [ "${TURTLE_LETTERS_BUNDLED_SIM:-0}" != 1 ] && installed_turtlesim; then
-  sim=installed
+if [ "${TURTLE_LETTERS_BUNDLED_SIM:-0}" != 1 ] && found=$(installed_turtlesim); then
+  sim="installed:$found"
+  echo "make build: turtlesim: the one installed at $found"
+  rm -f "$WS/src/turtlesim"
 else
   sim=bundled
-fi
-
-if [ "$sim" = bundled ]; then
+  if [ "${TURTLE_LETTERS_BUNDLED_SIM:-0}" = 1 ]; then
+    echo "make build: turtlesim: the bundled one (TURTLE_LETTERS_BUNDLED_SIM=1), $REPO/sim/turtlesim"
+  else
+    echo "make build: turtlesim: the bundled one, $REPO/sim/turtlesim (none found on" \
+         "ROS_PACKAGE_PATH or CMAKE_PREFIX_PATH)"
+  fi
   ln -sfn "$REPO/sim/turtlesim" "$WS/src/turtlesim"
-else
-  rm -f "$WS/src/turtlesim"
 fi
 
-# catkin_make re-runs CMake by itself only when its arguments change, not when
-# a package comes or goes: force it when the simulator choice changed.
-force=""
-if [ "$(cat "$WS/.simulator" 2>/dev/null)" != "$sim" ]; then
-  force=--force-cmake
+# A build of the other simulator leaves its turtlesim in devel/ (and install/),
+# found before the one now chosen: start those afresh when the choice changes.
+if [ -f "$WS/.simulator" ] && [ "$(cat "$WS/.simulator")" != "$sim" ]; then
+  echo "make build: the simulator changed since the last build: building afresh"
+  rm -rf "$WS/build" "$WS/devel" "$WS/install"
 fi
 
-echo "make build: workspace $WS, simulator: $sim"
-catkin_make -C "$WS" $force "${CATKIN_ARGS[@]}" >"$WS/build.log" 2>&1 || {
+echo "make build: workspace $WS"
+catkin_make -C "$WS" "${CATKIN_ARGS[@]}" >"$WS/build.log" 2>&1 || {
   tail -n 40 "$WS/build.log" >&2
   echo "make build: catkin_make failed; the whole log is $WS/build.log" >&2
   exit 1

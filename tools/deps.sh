@@ -5,7 +5,7 @@ source "$(dirname "$0")/env.sh"
 
 # On every platform: the compiler catkin's top-level CMake project needs, and
 # what the tests and the headless run use.
-COMMON="g++ python3-pytest python3-pyqt5 tmux"
+COMMON="g++ git python3-pytest python3-pyqt5 python3-yaml tmux"
 if [ -d /opt/ros/noetic ]; then
   # Ubuntu 20.04 with ROS Noetic: the real turtlesim.
   WANT="$COMMON ros-noetic-ros-base ros-noetic-turtlesim ros-noetic-rostest ros-noetic-std-srvs
@@ -15,7 +15,7 @@ else
   # simulator comes bundled, since Debian has no turtlesim.
   WANT="$COMMON ros-core-dev python3-rospy python3-rostest python3-roslaunch python3-rostopic
         python3-rosservice rosout python3-std-msgs python3-std-srvs python3-geometry-msgs
-        ros-std-srvs libstd-srvs-dev"
+        ros-std-srvs libstd-srvs-dev rosbash rospack-tools"
 fi
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then

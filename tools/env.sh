@@ -2,7 +2,8 @@
 # shellcheck shell=bash
 
 REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-WS="$REPO/.ws"                  # the catkin workspace `make build` makes
+# The catkin workspace `make build` makes (the build tests make others).
+WS="${TURTLE_LETTERS_WS:-$REPO/.ws}"
 ROS_PYTHON=/usr/bin/python3     # ROS 1 runs on the system Python 3 only
 # Every catkin_make call passes the same arguments: different ones make it
 # configure the workspace all over again.
@@ -29,7 +30,9 @@ ros_source() {
   return 0
 }
 
-if [ -f /opt/ros/noetic/setup.bash ]; then
+# Not when ROS is set up already: sourcing it again would drop the underlay
+# workspaces the user's shell has sourced.
+if [ -z "${ROS_DISTRO:-}" ] && [ -f /opt/ros/noetic/setup.bash ]; then
   ros_source /opt/ros/noetic/setup.bash
 fi
 

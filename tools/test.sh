@@ -1,6 +1,7 @@
 #!/bin/bash
-# `make test`: unit tests (pytest, no ROS), then every rostest through catkin;
-# ends with one line "N passed, N failed" counted over all of them.
+# `make test`: unit tests (pytest, no ROS), every rostest through catkin, then
+# the workspace tests (pytest, several catkin builds of their own); ends with
+# one line "N passed, N failed" counted over all of them.
 set -u
 source "$(dirname "$0")/env.sh"
 source_workspace || exit 1
@@ -26,6 +27,11 @@ catkin_test_results "$results" >"$WS/test_results.txt" 2>&1 || {
   cat "$WS/test_results.txt"
   echo "(the full rostest output is in $WS/run_tests.log)"
 }
+
+echo "== workspace tests: underlay, switching simulators, the README's recipe, install space"
+mkdir -p "$results/workspace"
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -p no:cacheprovider \
+  --junitxml="$results/workspace/pytest.xml" test/workspace) || status=1
 
 "$ROS_PYTHON" "$REPO/tools/summarize_tests.py" "$results" || status=1
 exit $status

@@ -161,9 +161,9 @@ def main():
         raise SystemExit(2)
     talker = Talker(typing, trigger)
     if typing:
-        what = 'a letter or digit to draw it'
+        what = 'a letter or digit to draw it (no Enter needed)'
     elif len(trigger) == 1:
-        what = f'{trigger.upper()} to draw the letter'
+        what = f'{trigger.upper()} to draw the letter (no Enter needed)'
     else:
         what = f'Enter to send {trigger!r} and draw the letter'
 
@@ -178,7 +178,7 @@ def main():
                       'Publish on %s instead.', rospy.resolve_name('chatter'))
     elif os.isatty(fd):
         def prompt():
-            sys.stdout.write(f'talker: press {what} (no Enter needed); Ctrl-C quits\n')
+            sys.stdout.write(f'talker: press {what}; Ctrl-C quits\n')
             sys.stdout.flush()
         read_terminal(talker, fd, prompt, signals)
     else:

@@ -119,6 +119,20 @@ class TurtlesimContract(unittest.TestCase):
         self.assertAlmostEqual(p.x, 2.0, places=4)
         self.assertAlmostEqual(p.y, 4.0, places=4)
 
+    def test_05b_teleport_absolute_clamps_y_at_the_top_at_once_and_at_the_bottom_as_a_wall(self):
+        walls = sum('I hit the wall' in m for m in self.logs)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 3.0, 20.0, 0.0)
+        p = settled_pose()
+        self.assertAlmostEqual(p.y, 499 / 45.0, places=4)
+        self.assertEqual(sum('I hit the wall' in m for m in self.logs), walls)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 3.0, -2.0, 0.0)
+        p = settled_pose()
+        self.assertEqual((round(p.x, 4), p.y), (3.0, 0.0))
+        deadline = time.time() + WAIT
+        while sum('I hit the wall' in m for m in self.logs) == walls and time.time() < deadline:
+            rospy.sleep(0.05)
+        self.assertEqual(sum('I hit the wall' in m for m in self.logs), walls + 1)
+
     def test_06_cmd_vel_moves_then_times_out_after_a_second(self):
         pub = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=1)
         twist = Twist()

@@ -111,7 +111,10 @@ class Turtle:
             old = (self.x, self.y)
             if request[0] == 'absolute':
                 _, self.x, y, self.theta = request
-                self.y = max(0.0, y)
+                # The real node keeps y in screen coordinates (height - y),
+                # clamped at >= 0: a y above the top is pulled down here, at
+                # once; one below 0 hits the wall in the step below.
+                self.y = min(y, WORLD_SIZE)
             else:
                 _, linear, angular = request
                 self.theta += angular

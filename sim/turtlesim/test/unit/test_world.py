@@ -95,11 +95,20 @@ def test_teleports_apply_in_order_at_the_next_step_and_draw():
     assert [(s.x1, s.y1) for s in segments] == pytest.approx([(1.0, 2.0), (1.0, 3.0)])
 
 
-def test_teleport_absolute_clamps_y_at_zero_only():
+def test_teleport_absolute_above_the_top_is_clamped_at_once_without_a_wall_hit():
+    t = turtle_at()
+    t.teleport_absolute(3.0, 20.0, 0.0)
+    _, clamped_from = t.step(now=0.0)
+    assert (t.x, t.y) == (3.0, WORLD_SIZE)
+    assert clamped_from is None
+
+
+def test_teleport_absolute_below_the_bottom_hits_the_wall_in_the_step():
     t = turtle_at()
     t.teleport_absolute(3.0, -2.0, 0.0)
-    t.step(now=0.0)
+    _, clamped_from = t.step(now=0.0)
     assert (t.x, t.y) == (3.0, 0.0)
+    assert clamped_from == (3.0, -2.0)
 
 
 def test_pen_off_draws_nothing_and_keeps_its_colour():
