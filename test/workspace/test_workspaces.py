@@ -67,12 +67,13 @@ def make_build(home, underlay, workspace, bundled=False):
 
 
 def where_turtlesim(home, workspace):
-    """The turtlesim package, its node and its messages, as a user of the
-    workspace gets them."""
-    out = bash(f'source {workspace}/devel/setup.bash\n'
-               'rospack find turtlesim\n'
-               'catkin_find --first-only turtlesim turtlesim_node\n'
-               "python3 -c 'import turtlesim.msg; print(turtlesim.msg.__file__)'", home)
+    """The turtlesim package, its node and its messages, as roslaunch finds
+    them for a user of the workspace."""
+    out = bash(f'source {workspace}/devel/setup.bash\n' + "python3 -c '"
+               'import rospkg, roslib.packages, turtlesim.msg\n'
+               'print(rospkg.RosPack().get_path("turtlesim"))\n'
+               'print(roslib.packages.find_node("turtlesim", "turtlesim_node")[0])\n'
+               "print(turtlesim.msg.__file__)'", home)
     return out.split()[-3:]
 
 
@@ -116,8 +117,10 @@ class Launch:
 
     def __init__(self, home, setup, arguments):
         self.log = home / f'launch_{time.monotonic_ns()}.log'
+        # Unbuffered: the nodes' log lines reach the file as they are written.
         clean = {'PATH': '/usr/bin:/bin', 'HOME': str(home), 'LANG': 'C.UTF-8',
-                 'ROS_IP': '127.0.0.1', 'ROS_MASTER_URI': f'http://127.0.0.1:{free_port()}'}
+                 'ROS_IP': '127.0.0.1', 'ROS_MASTER_URI': f'http://127.0.0.1:{free_port()}',
+                 'PYTHONUNBUFFERED': '1'}
         with open(self.log, 'w') as out:
             self.process = subprocess.Popen(
                 ['bash', '-c', f'source {setup}\nexec roslaunch turtle_letters '
