@@ -19,7 +19,6 @@ from turtle_letters.geometry import distance_to_polyline, touches_a_wall, vertex
 from turtle_letters.plan import Layout, Line, Pen, Pose, glyph_for, glyph_strokes, plan_glyph
 
 VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
-PEN = (179, 184, 255)
 BACKGROUND = (69, 86, 255)
 
 
@@ -52,10 +51,14 @@ def pixel(image, x, y):
 
 
 class FeedbackLetters(unittest.TestCase):
-    def test_a_three_letter_word_from_the_text_topic(self):
+    """One word drawn once (in setUpClass); each test checks one thing of it."""
+
+    @classmethod
+    def setUpClass(cls):
         rospy.init_node('feedback_letters_test')
         text = rospy.get_param('~text')
         size = rospy.get_param('~size')
+        cls.pen = tuple(int(c) for c in rospy.get_param('~pen').split()[:3])
         poses, lock = [], threading.Lock()
 
         def on_pose(msg):
@@ -66,8 +69,9 @@ class FeedbackLetters(unittest.TestCase):
         pub = rospy.Publisher('/turtlebot_controller/text', String, queue_size=1, latch=True)
         pub.publish(String(text))
 
-        strokes, travel = expected(text, Pose(first.x, first.y, first.theta), size, 'shortest')
-        last = strokes[-1][-1]
+        cls.strokes, cls.travel = expected(text, Pose(first.x, first.y, first.theta), size,
+                                           'shortest')
+        last = cls.strokes[-1][-1]
         deadline = time.time() + 400
         while time.time() < deadline:
             with lock:
@@ -75,19 +79,22 @@ class FeedbackLetters(unittest.TestCase):
             if math.hypot(p.x - last[0], p.y - last[1]) < 1e-3 and p.linear_velocity == 0:
                 break
             time.sleep(0.2)
-        time.sleep(0.5)
         with lock:
-            path = [(p.x, p.y) for p in poses]
+            cls.path = [(p.x, p.y) for p in poses]
 
-        vertices = [v for stroke in strokes for v in stroke]
-        errors = vertex_errors(path, vertices)
+    def test_every_vertex_is_reached(self):
+        vertices = [v for stroke in self.strokes for v in stroke]
+        errors = vertex_errors(self.path, vertices)
         self.assertLess(max(errors), VERTEX_TOLERANCE, f'worst vertex {max(errors) * 1000:.2f} mm')
-        allowed = strokes + travel
-        worst = max(min(distance_to_polyline(q, line) for line in allowed) for q in path)
-        self.assertLess(worst, VERTEX_TOLERANCE, f'{worst * 1000:.2f} mm off the strokes')
-        self.assertFalse(touches_a_wall(path))
-        self.assertGreater(len(travel), 2, 'the word should need pen-up travel')
 
+    def test_the_path_keeps_to_the_strokes_and_travel_moves(self):
+        allowed = self.strokes + self.travel
+        worst = max(min(distance_to_polyline(q, line) for line in allowed) for q in self.path)
+        self.assertLess(worst, VERTEX_TOLERANCE, f'{worst * 1000:.2f} mm off the strokes')
+        self.assertFalse(touches_a_wall(self.path))
+        self.assertGreater(len(self.travel), 2, 'the word should need pen-up travel')
+
+    def test_the_picture_has_ink_in_the_pen_colour_and_none_on_travel(self):
         try:
             rospy.wait_for_service('/turtlesim/save_canvas', timeout=5)
         except rospy.ROSException:
@@ -96,15 +103,15 @@ class FeedbackLetters(unittest.TestCase):
         rospy.set_param('/turtlesim/canvas_png', path_png)
         self.assertTrue(rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)().success)
         image = QImage(path_png)
-        for a, b in travel:
+        for a, b in self.travel:
             for i in range(1, 20):
                 q = (a[0] + (b[0] - a[0]) * i / 20, a[1] + (b[1] - a[1]) * i / 20)
-                if min(distance_to_polyline(q, s) for s in strokes) > 0.15:
+                if min(distance_to_polyline(q, s) for s in self.strokes) > 0.15:
                     self.assertEqual(pixel(image, *q), BACKGROUND, f'pen-up line at {q}')
-        for stroke in strokes:
+        for stroke in self.strokes:
             for a, b in zip(stroke, stroke[1:]):
                 mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-                self.assertEqual(pixel(image, *mid), PEN, f'no stroke at {mid}')
+                self.assertEqual(pixel(image, *mid), self.pen, f'no stroke in the pen colour at {mid}')
 
 
 if __name__ == '__main__':
