@@ -6,16 +6,16 @@ prints one line saying which, and exits non-zero, so roslaunch stops before
 starting anything and itself exits non-zero (a node that refuses its
 parameters cannot make roslaunch fail). On success it prints the settings.
 
-Usage: check_settings.py name=HEX [...]: each value as given to roslaunch,
-after "str:", in hexadecimal (no quote or space can break the command line).
-A name marked name:str is a string parameter; the others are read the way
-roslaunch reads a <param> value.
+Usage: check_settings.py name=HEX [...]: each launch argument as given, after
+the "str:" the launch file puts before it, in hexadecimal, so that no quote
+or space can break the command line. The parameter table says how each value
+is read.
 """
 import sys
 
-from roslaunch.loader import convert_value
+from turtle_letters.settings import PARAMETERS, ParameterError, Settings, launch_value
 
-from turtle_letters.settings import ParameterError, Settings
+TYPES = {p.name: p.type for p in PARAMETERS}
 
 
 def main(argv):
@@ -24,10 +24,7 @@ def main(argv):
         name, _, encoded = argument.partition('=')
         raw = bytes.fromhex(encoded).decode('utf-8')
         raw = raw[len('str:'):] if raw.startswith('str:') else raw
-        if name.endswith(':str'):
-            values['~' + name[:-len(':str')]] = raw
-        else:
-            values['~' + name] = convert_value(raw, 'auto')
+        values['~' + name] = launch_value(raw, TYPES[name])
     try:
         settings = Settings(lambda name, default: values.get(name, default))
     except ParameterError as e:

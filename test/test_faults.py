@@ -200,8 +200,8 @@ class Faults(unittest.TestCase):
         self.logs.messages.clear()      # count only what this test's launches log
         cases = {'letter:=%': "~letter is '%'", 'size:=0': '~size is 0',
                  'size:=50': '~size is 50', 'mode:=fast': "~mode is 'fast'",
-                 "text:=IT'S": '~text has characters with no glyph ["\'"]',
-                 'text:=SAY "HI"': '~text has characters', 'mode:=a b': "~mode is 'a b'",
+                 "text:=IT'S": '~text is "IT\'S"', 'text:=SAY "HI"': '~text is \'SAY "HI"\'',
+                 'mode:=a b': "~mode is 'a b'",
                  'pen:=255 0 0': "~pen is '255 0 0'"}
         for argument, expected in cases.items():
             run = subprocess.run(

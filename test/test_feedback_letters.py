@@ -16,7 +16,7 @@ from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
 from turtle_letters.geometry import distance_to_polyline, touches_a_wall, vertex_errors
-from turtle_letters.plan import Layout, Line, Pen, Pose, glyph_for, glyph_strokes, plan_glyph
+from turtle_letters.plan import Layout, Line, Pen, PlannedPose, glyph_for, glyph_strokes, plan_glyph
 
 VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
 BACKGROUND = (69, 86, 255)
@@ -69,7 +69,7 @@ class FeedbackLetters(unittest.TestCase):
         pub = rospy.Publisher('/turtlebot_controller/text', String, queue_size=1, latch=True)
         pub.publish(String(text))
 
-        cls.strokes, cls.travel = expected(text, Pose(first.x, first.y, first.theta), size,
+        cls.strokes, cls.travel = expected(text, PlannedPose(first.x, first.y, first.theta), size,
                                            'shortest')
         last = cls.strokes[-1][-1]
         deadline = time.time() + 400

@@ -32,7 +32,7 @@ from turtlesim.msg import Pose as PoseMsg  # noqa: E402
 from turtlesim.srv import Spawn  # noqa: E402
 
 from turtle_letters.geometry import distance_to_polyline, vertex_errors  # noqa: E402
-from turtle_letters.plan import Layout, Pose, glyph_for, glyph_strokes  # noqa: E402
+from turtle_letters.plan import Layout, PlannedPose, glyph_for, glyph_strokes  # noqa: E402
 from turtle_letters.procstat import cpu_seconds, rss_mb  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
@@ -123,7 +123,7 @@ def wait_for(condition, timeout, what):
 
 
 def ideal_strokes(letter, size):
-    start = Pose(5.544445, 5.544445, 0.0)
+    start = PlannedPose(5.544445, 5.544445, 0.0)
     place = Layout((start.x, start.y), size).reserve(letter)[0][0]
     return glyph_strokes(glyph_for(letter), place, size)
 

@@ -3,72 +3,50 @@
 Pose messages are the clock: turtlesim publishes one per 16 ms tick, and the
 drawing thread sends one command per pose it receives, so cmd_vel goes out at
 the simulator's own 62.5 Hz and nothing ever waits in a loop of its own.
+
+The drawing runs on its own thread, one primitive after the other, so that it
+reads like the lab: rotate(90); move(3.0); ... Stepping a state machine from
+the pose callback instead (as turtlesim's draw_square does) would need the
+sequence cut into states; the thread keeps it a plain sequence.
 """
 import math
-import queue
 import sys
 import threading
-import time
 import traceback
 
 import rospy
-from geometry_msgs.msg import Twist
 from std_msgs.msg import String
-from std_srvs.srv import Empty
-from turtlesim.msg import Pose as PoseMsg
-from turtlesim.srv import SetPen
 
+from .driver import DrawingAborted, TurtleDriver
+from .drawing import LetterDrawer
 from .jobs import Jobs
-from .motion import EXECUTORS, STOP, PoseSample
-from .plan import DoesNotFit, Layout, Line, Pen, Pose, Turn, glyph_for, plan_glyph, undrawable, wrap
+from .motion import EXECUTORS, STOP, TimedExecutor
+from .plan import DoesNotFit, Line, PlannedPose, Turn, glyph_for, undrawable, wrap
 from .settings import ParameterError, Settings, quote_unreadable
 
-POSE_TIMEOUT = 1.0                  # s without a pose: the simulator is gone
-POSES_KEPT = 1000                   # 16 s of ticks: the drawing thread reads far faster
 # Ignored messages can come at any rate (the tutorial talker sends "hello
 # world" at 10 Hz on chatter): the first is said, then one per period.
 IGNORED_LOG_PERIOD = 10.0
 THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
 
 
-class DrawingAborted(RuntimeError):
-    pass
-
-
-class TurtleController:
-    """Subscribes `chatter` and `turtle1/pose`; publishes `turtle1/cmd_vel`;
-    calls `turtle1/set_pen` and `clear`. Subscribes `~text` (std_msgs/String):
-    a word to draw. Parameters: see Settings."""
+class TurtleController(LetterDrawer):
+    """The lab's class. Subscribes `chatter` (the trigger, or typed keys) and
+    `~text` (std_msgs/String: a word to draw); drives the turtle through a
+    TurtleDriver. Parameters: see settings.PARAMETERS."""
 
     def __init__(self, settings: Settings):
-        self.settings = settings
-        self._poses = queue.Queue(maxsize=POSES_KEPT)
-        self._latest_pose = None
+        super().__init__(settings)
+        self.driver = TurtleDriver()
         self.jobs = Jobs()
-        self._layout = None
-        self._pen_known_down = True
-        self._publish_lock = threading.Lock()
-        self._stopping = False                 # once set, only the stop goes out
-        self._cmd_vel = rospy.Publisher('turtle1/cmd_vel', Twist, queue_size=10)
-        self._set_pen = rospy.ServiceProxy('turtle1/set_pen', SetPen)
-        self._clear = rospy.ServiceProxy('clear', Empty)
-        rospy.Subscriber('turtle1/pose', PoseMsg, self._on_pose, queue_size=100, tcp_nodelay=True)
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=10)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
-        rospy.on_shutdown(self._on_shutdown)
         self._worker = threading.Thread(target=self._work, name='drawing', daemon=True)
         self._worker.start()
         if settings.text:
             self.request(settings.text, 'the ~text parameter')
 
-    # -- inputs ----------------------------------------------------------------
-    def _on_pose(self, msg):
-        sample = PoseSample(msg.x, msg.y, msg.theta, msg.linear_velocity, msg.angular_velocity)
-        self._latest_pose = sample
-        if self._poses.full():          # idle: nobody reads; keep only the newest
-            self._poses.get_nowait()
-        self._poses.put_nowait(sample)
-
+    # -- requests --------------------------------------------------------------
     def _on_chatter(self, msg):
         data = msg.data
         shown = repr(data if len(data) <= 40 else data[:40] + '...')
@@ -103,88 +81,52 @@ class TurtleController:
             rospy.logwarn_throttle(IGNORED_LOG_PERIOD, 'Key %r ignored: %d keys are already '
                                    'waiting' + THROTTLED, char, self.jobs.typed_ahead)
 
-    # -- primitives ------------------------------------------------------------------
+    # -- the lab's primitives --------------------------------------------------
     def rotate(self, degrees):
         """Turn in place by `degrees` (counter-clockwise positive), timed."""
-        pose = self._wait_for_pose()
-        self._drop_stale_poses()
+        pose = self._fresh_pose()
         angle = math.radians(degrees)
-        self._run(Turn(angle, wrap(pose.theta + angle)), 'timed')
+        self._execute(Turn(angle, wrap(pose.theta + angle)), self._timed)
 
     def move(self, meters):
         """Drive `meters` straight ahead, timed."""
-        pose = self._wait_for_pose()
-        self._drop_stale_poses()
-        self._run(Line(meters, pose.x + meters * math.cos(pose.theta),
-                       pose.y + meters * math.sin(pose.theta), pose.theta), 'timed')
+        pose = self._fresh_pose()
+        self._execute(Line(meters, pose.x + meters * math.cos(pose.theta),
+                           pose.y + meters * math.sin(pose.theta), pose.theta), self._timed)
 
-    def _run(self, primitive, mode):
-        s = self.settings
-        executor = EXECUTORS[mode](primitive, s.linear_speed, s.angular_speed)
-        rospy.loginfo('%s: start at %s', _describe(primitive), _pose_text(self._latest_pose))
-        command = executor.start(self._latest_pose)
-        while command is not None:
-            self._publish(command)
-            command = executor.update(self._next_pose())
-        self._publish(STOP)
-        rospy.loginfo('%s: end at %s', _describe(primitive), _pose_text(self._latest_pose))
+    def steer(self, primitive):
+        """Reach the primitive's end, closed loop on the pose."""
+        self._fresh_pose()
+        self._execute(primitive, EXECUTORS['feedback'])
 
-    def _drop_stale_poses(self):
-        """Poses from before now would count ticks that are not ours."""
-        while not self._poses.empty():
-            self._poses.get_nowait()
+    def pen(self, down):
+        self.driver.set_pen(self.settings.pen, down)
 
-    def _next_pose(self):
-        try:
-            pose = self._poses.get(timeout=POSE_TIMEOUT)
-        except queue.Empty:
-            raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s') from None
-        if rospy.is_shutdown():
-            raise DrawingAborted('shutting down')
+    def clear(self):
+        rospy.loginfo('The canvas is full: clearing it and starting again at the first place')
+        self.driver.clear()
+
+    def _timed(self, primitive, linear_speed, angular_speed):
+        return TimedExecutor(primitive, linear_speed, angular_speed, self.settings.clock)
+
+    def _fresh_pose(self):
+        pose = self.driver.wait_for_pose()
+        self.driver.drop_stale_poses()
         return pose
 
-    def _publish(self, command):
-        twist = Twist()
-        twist.linear.x, twist.linear.y, twist.angular.z = command
-        with self._publish_lock:
-            if not self._stopping:
-                self._cmd_vel.publish(twist)
+    def _execute(self, primitive, executor_type):
+        """One command per pose until the executor is done, then a stop."""
+        s = self.settings
+        executor = executor_type(primitive, s.linear_speed, s.angular_speed)
+        rospy.loginfo('%s: start at %s', _describe(primitive), _pose_text(self.driver.latest_pose))
+        command = executor.start(self.driver.latest_pose)
+        while command is not None:
+            self.driver.publish(command)
+            command = executor.update(self.driver.next_pose())
+        self.driver.publish(STOP)
+        rospy.loginfo('%s: end at %s', _describe(primitive), _pose_text(self.driver.latest_pose))
 
-    def stop(self):
-        """Stop the turtle now rather than let it coast for turtlesim's 1 s timeout."""
-        try:
-            self._publish(STOP)
-        except rospy.ROSException:
-            pass    # already shut down: the shutdown hook sent the stop
-
-    def _on_shutdown(self):
-        """The last word on cmd_vel is a stop, even with a drawing under way."""
-        with self._publish_lock:
-            self._stopping = True
-            self._cmd_vel.publish(Twist())
-        # The publisher's queue thread sends it; give it a moment before
-        # rospy closes the topic (the turtle is at most one tick away).
-        time.sleep(0.1)
-
-    def _pen(self, down):
-        # Lowering the pen sets its colour too: the user's, not turtlesim's default.
-        self._set_pen(*self.settings.pen, 0 if down else 1)
-        self._pen_known_down = down
-
-    # -- drawing ---------------------------------------------------------------------
-    def _wait_for_pose(self):
-        if self._latest_pose is None:
-            rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when it comes',
-                          rospy.resolve_name('turtle1/pose'))
-        while self._latest_pose is None and not rospy.is_shutdown():
-            try:
-                self._poses.get(timeout=0.5)
-            except queue.Empty:
-                pass
-        if self._latest_pose is None:
-            raise DrawingAborted('shutting down')
-        return self._latest_pose
-
+    # -- the drawing thread ----------------------------------------------------
     def _work(self):
         while not rospy.is_shutdown():
             text = self.jobs.take(timeout=0.5)
@@ -199,12 +141,21 @@ class TurtleController:
             finally:
                 self.jobs.done()
 
+    def draw(self, text):
+        """Draw `text` at the next free places on the canvas."""
+        pose = self.driver.wait_for_pose()
+        start = PlannedPose(pose.x, pose.y, pose.theta)
+        places, must_clear = self.reserve(text, start)
+        rospy.loginfo('Drawing %r (%s mode)', text, self.settings.mode)
+        self.trace(text, places, must_clear, start)
+        rospy.loginfo('Done drawing %r; the turtle is at %s', text,
+                      _pose_text(self.driver.latest_pose))
+
     def _abandon(self, text, error):
         """Stop the turtle and forget the layout: the simulator may come back
         with a fresh canvas, so the next drawing starts wherever the turtle is."""
-        self.stop()
-        self._layout = None
-        self._pen_known_down = False
+        self.driver.stop()
+        self.forget_layout()
         if isinstance(error, DrawingAborted):
             cause = str(error)
         elif isinstance(error, rospy.ServiceException):
@@ -213,31 +164,6 @@ class TurtleController:
             cause = f'{type(error).__name__}: {error}'
             rospy.logdebug('Drawing of %r failed:\n%s', text, traceback.format_exc())
         rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text, cause)
-
-    def draw(self, text):
-        """Draw `text` at the next free places on the canvas."""
-        s = self.settings
-        pose = self._wait_for_pose()
-        if self._layout is None:
-            self._layout = Layout((pose.x, pose.y), s.size)
-        places, must_clear = self._layout.reserve(text)
-        self._drop_stale_poses()
-        if must_clear:
-            rospy.loginfo('The canvas is full: clearing it and starting again at the first place')
-            self._clear()
-        self._pen(True)
-        rospy.loginfo('Drawing %r (%s mode)', text, s.mode)
-        start = Pose(pose.x, pose.y, pose.theta)
-        for char, place in zip(text, places):
-            if place is None:
-                continue
-            primitives, start = plan_glyph(glyph_for(char), place, s.size, start, s.turn_direction)
-            for primitive in primitives:
-                if isinstance(primitive, Pen):
-                    self._pen(primitive.down)
-                else:
-                    self._run(primitive, s.mode)
-        rospy.loginfo('Done drawing %r; the turtle is at %s', text, _pose_text(self._latest_pose))
 
 
 def _describe(primitive):

@@ -1,21 +1,27 @@
-"""What to command on each simulator tick, for one primitive. No ROS here.
+"""Executors: what to command on each simulator tick to carry out one
+primitive (a Turn or a Line of plan.py). No ROS here.
 
 Turtlesim advances a fixed 16 ms per tick and publishes one pose per tick,
 whatever the wall clock says (a loaded machine makes ticks late, not longer).
-So both executors run on the simulator's clock: they are called once per pose
-and answer with the command for the next tick.
+An executor is called once per pose (anything with turtlesim/Pose's fields)
+and answers with the command for the next tick, or None when it is done.
 
-- Timed (the lab's way, open loop): a primitive lasts amount / speed seconds
-  of simulator time. Elapsed time is counted from the velocities the pose
-  reports the simulator used, and the last tick gets the fraction of the speed
-  that completes the amount. Position is never looked at.
+- Timed (the lab's way, open loop): a primitive lasts amount / speed seconds,
+  and position is never looked at. On the simulator's clock (the default)
+  elapsed time is counted from the velocities the pose reports the simulator
+  used, and the last tick gets the fraction of the speed that completes the
+  amount: exact on any machine. On the wall clock, as the lab's
+  rospy.Time.now() loop does, it commands the speed until amount / speed
+  seconds have passed; a busy machine slows the simulator's ticks, so the
+  turtle then comes up short.
 - Feedback (closed loop on the pose): steer to the primitive's absolute target
   in the turtle's own frame. Each command is at most half the remaining error
   per tick, so a command the simulator applies twice (it arrived a tick late)
   still lands on the target instead of overshooting it.
 """
 import math
-from typing import NamedTuple, Optional
+import time
+from typing import Callable, NamedTuple, Optional
 
 from .plan import Turn, wrap
 
@@ -33,48 +39,50 @@ class Command(NamedTuple):
 STOP = Command()
 
 
-class PoseSample(NamedTuple):
-    """The fields of turtlesim/Pose this module needs."""
-    x: float
-    y: float
-    theta: float
-    linear_velocity: float
-    angular_velocity: float
-
-
 def _clamp(value: float, limit: float) -> float:
     return max(-limit, min(limit, value))
 
 
-class TimedPrimitive:
-    """Turn or drive for amount / speed seconds of simulator time."""
+class TimedExecutor:
+    """Turn or drive for amount / speed seconds, on the simulator's clock
+    ('sim') or the wall clock ('wall', read with `now`)."""
 
-    def __init__(self, primitive, linear_speed: float, angular_speed: float) -> None:
+    def __init__(self, primitive, linear_speed: float, angular_speed: float,
+                 clock: str = 'sim', now: Callable[[], float] = time.monotonic) -> None:
         self.turning = isinstance(primitive, Turn)
         amount = primitive.angle if self.turning else primitive.length
         self.sign = 1.0 if amount >= 0 else -1.0
         self.amount = abs(amount)
         self.speed = angular_speed if self.turning else linear_speed
+        self.clock = clock
+        self.now = now
         self.elapsed_amount = 0.0
+        self.started_at = None
 
     def _command(self) -> Optional[Command]:
         remaining = self.amount - self.elapsed_amount
         if remaining <= 1e-9:
             return None
-        speed = self.sign * min(self.speed, remaining / SIM_TICK)
+        speed = self.sign * self.speed
+        if self.clock == 'sim':
+            speed = self.sign * min(self.speed, remaining / SIM_TICK)
         return Command(angular=speed) if self.turning else Command(linear_x=speed)
 
-    def start(self, pose: PoseSample) -> Optional[Command]:
+    def start(self, pose) -> Optional[Command]:
         """The first command, sent at once (the pose is not needed)."""
+        self.started_at = self.now()
         return self._command()
 
-    def update(self, pose: PoseSample) -> Optional[Command]:
-        used = pose.angular_velocity if self.turning else pose.linear_velocity
-        self.elapsed_amount += abs(used) * SIM_TICK
+    def update(self, pose) -> Optional[Command]:
+        if self.clock == 'sim':
+            used = pose.angular_velocity if self.turning else pose.linear_velocity
+            self.elapsed_amount += abs(used) * SIM_TICK
+        else:
+            self.elapsed_amount = self.speed * (self.now() - self.started_at)
         return self._command()
 
 
-class FeedbackPrimitive:
+class FeedbackExecutor:
     """Reach the primitive's absolute heading or point, measured on the pose."""
 
     def __init__(self, primitive, linear_speed: float, angular_speed: float) -> None:
@@ -86,11 +94,11 @@ class FeedbackPrimitive:
         self.turn_left = primitive.angle if isinstance(primitive, Turn) else 0.0
         self.last_theta = None
 
-    def start(self, pose: PoseSample) -> Optional[Command]:
+    def start(self, pose) -> Optional[Command]:
         """The first command, from the latest pose, sent at once."""
         return self.update(pose)
 
-    def update(self, pose: PoseSample) -> Optional[Command]:
+    def update(self, pose) -> Optional[Command]:
         if self.last_theta is not None:
             self.turn_left -= wrap(pose.theta - self.last_theta)
         self.last_theta = pose.theta
@@ -113,4 +121,5 @@ class FeedbackPrimitive:
         return Command(vx * scale, vy * scale, angular)
 
 
-EXECUTORS = {'timed': TimedPrimitive, 'feedback': FeedbackPrimitive}
+EXECUTORS = {'timed': TimedExecutor, 'feedback': FeedbackExecutor}
+CLOCKS = ('sim', 'wall')

@@ -33,7 +33,8 @@ class Pen(NamedTuple):
     down: bool
 
 
-class Pose(NamedTuple):
+class PlannedPose(NamedTuple):
+    """Where the plan has the turtle: the start or end of a path."""
     x: float
     y: float
     heading: float
@@ -56,7 +57,7 @@ def turn_between(heading: float, target: float, direction: str) -> float:
     return wrap(target - heading)
 
 
-def path(points: List[Tuple[float, float]], start: Pose, direction: str):
+def path(points: List[Tuple[float, float]], start: PlannedPose, direction: str):
     """Primitives that drive from `start` through `points`; returns them and the end pose."""
     primitives = []
     x, y, heading = start
@@ -71,7 +72,7 @@ def path(points: List[Tuple[float, float]], start: Pose, direction: str):
         heading = target
         primitives.append(Line(length, px, py, heading))
         x, y = px, py
-    return primitives, Pose(x, y, heading)
+    return primitives, PlannedPose(x, y, heading)
 
 
 def glyph_strokes(glyph: Glyph, origin: Tuple[float, float], size: float):
@@ -80,7 +81,7 @@ def glyph_strokes(glyph: Glyph, origin: Tuple[float, float], size: float):
     return [[(ox + size * gx, oy + size * gy) for gx, gy in stroke] for stroke in glyph.strokes]
 
 
-def plan_glyph(glyph: Glyph, origin: Tuple[float, float], size: float, start: Pose,
+def plan_glyph(glyph: Glyph, origin: Tuple[float, float], size: float, start: PlannedPose,
                direction: str = 'ccw'):
     """Primitives that draw `glyph`, starting from the turtle's `start` pose.
 

@@ -1,12 +1,14 @@
-"""The controller's parameters, read and checked in one place. No ROS here:
-the node passes rospy.get_param in, and the launch file's check passes the
-launch arguments, so a bad value is refused before anything starts."""
+"""The controller's parameters: one table (PARAMETERS), read and checked in
+one place. No ROS here: the node passes rospy.get_param in, and the launch
+file's check passes the launch arguments, so a bad value is refused before
+anything starts."""
 import math
+from typing import Callable, NamedTuple
 
 import yaml
 
 from .font import FONT
-from .motion import EXECUTORS
+from .motion import CLOCKS, EXECUTORS
 from .plan import LARGEST_SIZE, TURN_DIRECTIONS, glyph_for, undrawable
 
 
@@ -17,86 +19,144 @@ class ParameterError(ValueError):
     pass
 
 
-class Settings:
-    """The controller's private parameters.
+# -- what a value may be: each check returns the value to use, or raises -----
+def _string(value):
+    if not isinstance(value, str):
+        raise ValueError('a string')
+    return value
 
-    ~trigger (str, default "P"): the /chatter message that starts a drawing.
-    ~letter (str, default "N"): the character drawn on a trigger (A-Z, 0-9).
-    ~size (float, default 3.0, m): letter height; the lab's N is 3.0 m.
-    ~mode (str, default "timed"): "timed" (the lab's open-loop primitives,
-        timed on the simulator's clock) or "feedback" (closed loop on the pose).
-    ~linear_speed (float, default 1.0, m/s), ~angular_speed (float, default
-        0.25, rad/s): the lab's speeds; in feedback mode, the caps.
-    ~turn_direction (str, default "ccw"): "ccw" turns counter-clockwise only,
-        as the lab does; "shortest" turns whichever way is shorter.
-    ~typing (bool, default false): draw every letter or digit heard on
-        /chatter, like a typewriter, instead of ~letter on ~trigger.
-    ~text (str, default ""): if set, drawn once as soon as the turtle's pose
-        is known.
-    ~pen (str "r g b width" or a list of 4 integers, default "179 184 255 3",
-        turtlesim's own pen): colour 0-255 and width 1-255 px of the ink.
-    """
+
+def _trigger(value):
+    if not isinstance(value, str) or not value.strip():
+        raise ValueError('a non-blank string')
+    return value
+
+
+def _letter(value):
+    letter = _string(value).upper()
+    if len(letter) != 1 or glyph_for(letter) is None:
+        raise ValueError(f'one of {"".join(sorted(FONT))}')
+    return letter
+
+
+def _text(value):
+    text = _string(value).upper()
+    if undrawable(text):
+        raise ValueError(f'A-Z, 0-9 and space (no glyph for {undrawable(text)})')
+    return text
+
+
+def _positive(value):
+    if isinstance(value, bool) or not isinstance(value, (int, float)) \
+            or not math.isfinite(value) or value <= 0:
+        raise ValueError('a number > 0')
+    return float(value)
+
+
+def _size(value):
+    size = _positive(value)
+    if size > LARGEST_SIZE:
+        raise ValueError(f'up to {LARGEST_SIZE:.2f}, the largest letter that fits the canvas')
+    return size
+
+
+def _boolean(value):
+    if not isinstance(value, bool):
+        raise ValueError('true or false')
+    return value
+
+
+def _one_of(*allowed):
+    def check(value):
+        if value not in allowed:
+            raise ValueError(', '.join(allowed))
+        return value
+    return check
+
+
+def _pen(value):
+    parts = value.split() if isinstance(value, str) else value
+    numbers = [_integer(p) for p in parts] if isinstance(parts, list) else []
+    if len(numbers) == 4 and None not in numbers:
+        *colour, width = numbers
+        if all(0 <= c <= 255 for c in colour) and 1 <= width <= 255:
+            return tuple(numbers)
+    raise ValueError('"r g b width", r g b integers 0-255 and width 1-255')
+
+
+class Parameter(NamedTuple):
+    name: str
+    type: str           # str, float or bool; only str is given as type="str" in the launch file
+    default: str        # as the launch argument's default
+    unit: str
+    meaning: str
+    check: Callable[[object], object]
+
+
+# The controller's private parameters: the one table. The launch file has an
+# argument for each (same name and default), the README a row for each, and
+# test/unit/test_parameter_table.py fails when they disagree.
+PARAMETERS = (
+    Parameter('trigger', 'str', 'P', '', 'the chatter message that starts a drawing', _trigger),
+    Parameter('letter', 'str', 'N', '', 'what a trigger draws: A-Z or 0-9', _letter),
+    Parameter('size', 'float', '3.0', 'm', "letter height (the lab's N: 3.0)", _size),
+    Parameter('mode', 'str', 'timed', '',
+              "timed (the lab's open-loop primitives) or feedback (closed loop on the pose)",
+              _one_of(*EXECUTORS)),
+    Parameter('clock', 'str', 'sim', '',
+              "timed mode's clock: sim (the simulator's ticks: exact) or wall (the lab's "
+              "rospy.Time.now(): short when the machine is busy)", _one_of(*CLOCKS)),
+    Parameter('linear_speed', 'float', '1.0', 'm/s', 'driving speed (feedback: the cap)',
+              _positive),
+    Parameter('angular_speed', 'float', '0.25', 'rad/s', 'turning speed (feedback: the cap)',
+              _positive),
+    Parameter('turn_direction', 'str', 'ccw', '',
+              "ccw: always counter-clockwise, as the lab; shortest: the shorter way",
+              _one_of(*TURN_DIRECTIONS)),
+    Parameter('typing', 'bool', 'false', '', 'draw every letter or digit heard on chatter',
+              _boolean),
+    Parameter('text', 'str', '', '', 'a word drawn once, as soon as the pose is known', _text),
+    Parameter('pen', 'str', '179 184 255 3', 'px',
+              "ink: r g b (0-255) and width; turtlesim's own pen by default", _pen),
+)
+
+TABLE = {p.name: p for p in PARAMETERS}
+
+
+def launch_value(text, type_):
+    """A launch argument's text as the controller's <param> gets it: verbatim
+    for a str parameter (type="str"), else read as roslaunch reads an untyped
+    value (a number if it is one, true/false as booleans, else the text)."""
+    if type_ == 'str':
+        return text
+    try:
+        return float(text) if '.' in text else int(text)
+    except ValueError:
+        pass
+    if text.lower() in ('true', 'false'):
+        return text.lower() == 'true'
+    return text
+
+
+def read_parameter(name, get):
+    """One parameter of the table, read with `get(name, default)` and checked;
+    a bad value raises ParameterError saying what was given and what is allowed."""
+    p = TABLE[name]
+    value = get('~' + name, launch_value(p.default, p.type))
+    try:
+        return p.check(value)
+    except ValueError as e:
+        unit = f' ({p.unit})' if p.unit else ''
+        raise ParameterError(f'~{name} is {value!r}; allowed: {e}{unit}') from None
+
+
+class Settings:
+    """The controller's private parameters, one attribute each: see PARAMETERS."""
 
     def __init__(self, get):
         """`get(name, default)` reads one parameter (rospy.get_param in the node)."""
-        self.trigger = self._string(get, '~trigger', 'P')
-        if not self.trigger.strip():
-            raise ParameterError(f'~trigger is {self.trigger!r}; allowed: a non-blank string')
-        self.letter = self._string(get, '~letter', 'N').upper()
-        self.size = self._positive(get, '~size', 3.0, 'm')
-        if self.size > LARGEST_SIZE:
-            raise ParameterError(f'~size is {self.size:g}; allowed: up to {LARGEST_SIZE:.2f} m, '
-                                 'the largest letter that fits the canvas')
-        self.mode = self._choice(get, '~mode', 'timed', tuple(EXECUTORS))
-        self.linear_speed = self._positive(get, '~linear_speed', 1.0, 'm/s')
-        self.angular_speed = self._positive(get, '~angular_speed', 0.25, 'rad/s')
-        self.turn_direction = self._choice(get, '~turn_direction', 'ccw', TURN_DIRECTIONS)
-        self.typing = get('~typing', False)
-        self.text = self._string(get, '~text', '').upper()
-        if not isinstance(self.typing, bool):
-            raise ParameterError(f'~typing is {self.typing!r}; allowed: true or false')
-        if glyph_for(self.letter) is None or len(self.letter) != 1:
-            raise ParameterError(
-                f'~letter is {self.letter!r}; allowed: one of {"".join(sorted(FONT))}')
-        self.pen = self._pen(get, '~pen', DEFAULT_PEN)
-        bad = undrawable(self.text)
-        if bad:
-            raise ParameterError(f'~text has characters with no glyph {bad}; allowed: A-Z, 0-9, space')
-
-    @staticmethod
-    def _string(get, name, default):
-        value = get(name, default)
-        if not isinstance(value, str):
-            raise ParameterError(f'{name} is {value!r}; allowed: a string')
-        return value
-
-    @staticmethod
-    def _positive(get, name, default, unit):
-        value = get(name, default)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) \
-                or not math.isfinite(value) or value <= 0:
-            raise ParameterError(f'{name} is {value!r}; allowed: a number > 0 ({unit})')
-        return float(value)
-
-    @staticmethod
-    def _pen(get, name, default):
-        value = get(name, ' '.join(map(str, default)))
-        parts = value.split() if isinstance(value, str) else value
-        numbers = [_integer(p) for p in parts] if isinstance(parts, list) else []
-        if len(numbers) == 4 and None not in numbers:
-            *colour, width = numbers
-            if all(0 <= c <= 255 for c in colour) and 1 <= width <= 255:
-                return tuple(numbers)
-        raise ParameterError(f'{name} is {value!r}; allowed: "r g b width", '
-                             'r g b integers 0-255 and width 1-255 (px)')
-
-    @staticmethod
-    def _choice(get, name, default, allowed):
-        value = get(name, default)
-        if value not in allowed:
-            raise ParameterError(f'{name} is {value!r}; allowed: {", ".join(allowed)}')
-        return value
-
+        for p in PARAMETERS:
+            setattr(self, p.name, read_parameter(p.name, get))
 
 
 def _integer(value):

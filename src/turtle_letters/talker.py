@@ -18,7 +18,7 @@ import rospy
 from std_msgs.msg import String
 
 from .keys import ESCAPE_WAIT, KeyDecoder, message_for
-from .settings import quote_unreadable
+from .settings import ParameterError, quote_unreadable, read_parameter
 
 WAKE_UP = 0.5   # s: how often a blocked wait looks whether ROS shut the node down
 KEPT_PRESSES = 32   # presses kept while nobody subscribes; later ones are dropped
@@ -151,13 +151,11 @@ def read_terminal(talker, fd, prompt, signals):
 def main():
     rospy.init_node('talker', argv=quote_unreadable(sys.argv), disable_signals=True)
     signals = SignalPipe()
-    typing = rospy.get_param('~typing', False)
-    if not isinstance(typing, bool):
-        rospy.logfatal('%s: ~typing is %r; allowed: true or false', rospy.get_name(), typing)
-        raise SystemExit(2)
-    trigger = rospy.get_param('~trigger', 'P')
-    if not isinstance(trigger, str) or not trigger.strip():
-        rospy.logfatal('%s: ~trigger is %r; allowed: a non-blank string', rospy.get_name(), trigger)
+    try:
+        typing = read_parameter('typing', rospy.get_param)
+        trigger = read_parameter('trigger', rospy.get_param)
+    except ParameterError as e:
+        rospy.logfatal('%s: %s', rospy.get_name(), e)
         raise SystemExit(2)
     talker = Talker(typing, trigger)
     if typing:

@@ -5,7 +5,7 @@ import string
 import pytest
 
 from turtle_letters.font import ASCENT, FONT, LAB_N
-from turtle_letters.plan import Line, Pen, Pose, Turn, plan_glyph
+from turtle_letters.plan import Line, Pen, PlannedPose, Turn, plan_glyph
 
 ALL = sorted(FONT)
 
@@ -35,14 +35,14 @@ def test_pen_is_lifted_exactly_between_strokes(char):
     glyph = FONT[char]
     start = glyph.strokes[0][0]
     primitives, _ = plan_glyph(glyph, (1.0, 1.0), 3.0,
-                               Pose(1.0 + 3 * start[0], 1.0 + 3 * start[1], 0.0))
+                               PlannedPose(1.0 + 3 * start[0], 1.0 + 3 * start[1], 0.0))
     pens = [p.down for p in primitives if isinstance(p, Pen)]
     assert pens == [False, True] * (len(glyph.strokes) - 1)
     assert not primitives or not isinstance(primitives[-1], Pen)
 
 
 def test_n_is_the_labs_sequence_of_primitives():
-    primitives, end = plan_glyph(LAB_N, (5.544445, 5.544445), 3.0, Pose(5.544445, 5.544445, 0.0))
+    primitives, end = plan_glyph(LAB_N, (5.544445, 5.544445), 3.0, PlannedPose(5.544445, 5.544445, 0.0))
     kinds = [type(p) for p in primitives]
     assert kinds == [Turn, Line] * 3
     degrees = [math.degrees(p.angle) for p in primitives[0::2]]

@@ -1,13 +1,23 @@
 """The executors in closed loop with the simulator's own step function."""
 import math
 import struct
+from typing import NamedTuple
 
 import pytest
 
 from turtle_letters.font import FONT, LAB_N
-from turtle_letters.motion import EXECUTORS, PoseSample
-from turtle_letters.plan import Line, Pose, Turn, plan_glyph
+from turtle_letters.motion import EXECUTORS, TimedExecutor
+from turtle_letters.plan import Line, PlannedPose, Turn, plan_glyph
 from turtlesim_compat.world import CENTRE, Turtle
+
+
+class PoseMessage(NamedTuple):
+    """The fields of turtlesim/Pose, without ROS."""
+    x: float
+    y: float
+    theta: float
+    linear_velocity: float
+    angular_velocity: float
 
 
 def f32(value):
@@ -16,7 +26,7 @@ def f32(value):
 
 
 def sample(turtle):
-    return PoseSample(f32(turtle.x), f32(turtle.y), f32(turtle.theta),
+    return PoseMessage(f32(turtle.x), f32(turtle.y), f32(turtle.theta),
                       f32(turtle.linear_speed), f32(turtle.angular))
 
 
@@ -46,7 +56,7 @@ def run(primitives, mode, turtle, late_every=0, linear=1.0, angular=0.25):
 
 
 def n_at_centre():
-    return plan_glyph(LAB_N, (CENTRE, CENTRE), 3.0, Pose(CENTRE, CENTRE, 0.0))[0]
+    return plan_glyph(LAB_N, (CENTRE, CENTRE), 3.0, PlannedPose(CENTRE, CENTRE, 0.0))[0]
 
 
 @pytest.mark.parametrize('mode', ['timed', 'feedback'])
@@ -80,7 +90,7 @@ def test_feedback_reaches_every_vertex_within_a_millimetre_despite_late_commands
     origin = (3.0, 3.0)
     first = glyph.strokes[0][0]
     turtle = Turtle('t', origin[0] + 3 * first[0], origin[1] + 3 * first[1], 0.0)
-    for primitive in plan_glyph(glyph, origin, 3.0, Pose(turtle.x, turtle.y, 0.0), 'shortest')[0]:
+    for primitive in plan_glyph(glyph, origin, 3.0, PlannedPose(turtle.x, turtle.y, 0.0), 'shortest')[0]:
         if isinstance(primitive, Line):
             start = (turtle.x, turtle.y)
             track = run([primitive], 'feedback', turtle, late_every=5)
@@ -105,6 +115,46 @@ def test_feedback_turns_the_long_way_when_the_plan_says_so():
         turtle.command(*command, now=0)
         turtle.step(now=0)
         angles.append(turtle.angular)
-        command = executor.update(PoseSample(turtle.x, turtle.y, turtle.theta, 0.0, turtle.angular))
+        command = executor.update(PoseMessage(turtle.x, turtle.y, turtle.theta, 0.0, turtle.angular))
     assert min(angles) >= 0.0
     assert turtle.theta == pytest.approx(-math.pi / 4, abs=1e-4)
+
+
+class WallClock:
+    """The wall clock as the controller would read it: `seconds_per_tick`
+    pass between two poses (16 ms on an idle machine, more when loaded)."""
+
+    def __init__(self, seconds_per_tick):
+        self.seconds_per_tick = seconds_per_tick
+        self.time = 100.0
+
+    def __call__(self):
+        return self.time
+
+
+def drive_on_the_wall_clock(meters, seconds_per_tick):
+    turtle = Turtle('t', 1.0, 1.0, 0.0)
+    clock = WallClock(seconds_per_tick)
+    executor = TimedExecutor(Line(meters, 0, 0, 0), 1.0, 0.25, clock='wall', now=clock)
+    command = executor.start(sample(turtle))
+    tick = 0
+    while command is not None:
+        tick += 1
+        turtle.command(*command, now=tick)
+        turtle.step(now=tick)
+        clock.time += clock.seconds_per_tick
+        command = executor.update(sample(turtle))
+    return turtle.x - 1.0
+
+
+def test_the_wall_clock_is_the_labs_way_right_when_idle_short_when_loaded():
+    # idle: 16 ms a tick; the last tick may overshoot by up to one tick's travel
+    assert drive_on_the_wall_clock(3.0, 0.016) == pytest.approx(3.0, abs=0.0161)
+    # loaded: ticks come every 20 ms, each still moves the turtle 16 ms worth
+    assert drive_on_the_wall_clock(3.0, 0.020) == pytest.approx(3.0 * 16 / 20, abs=0.0161)
+
+
+def test_the_sim_clock_drives_the_exact_distance():
+    turtle = Turtle('t', 1.0, 1.0, 0.0)
+    run([Line(3.0, 0, 0, 0)], 'timed', turtle)
+    assert turtle.x - 1.0 == pytest.approx(3.0, abs=1e-6)

@@ -4,7 +4,7 @@ import math
 import pytest
 
 from turtle_letters.font import FONT
-from turtle_letters.plan import (MARGIN, WORLD_SIZE, DoesNotFit, Layout, Line, Pen, Pose,
+from turtle_letters.plan import (MARGIN, WORLD_SIZE, DoesNotFit, Layout, Line, Pen, PlannedPose,
                                  Turn, plan_glyph, turn_between)
 
 
@@ -19,7 +19,7 @@ def test_turns_counter_clockwise_or_the_short_way(start, target, ccw, shortest):
 
 
 def test_travel_to_a_letter_elsewhere_is_made_with_the_pen_up():
-    primitives, end = plan_glyph(FONT['L'], (1.0, 1.0), 2.0, Pose(5.0, 5.0, 0.0), 'shortest')
+    primitives, end = plan_glyph(FONT['L'], (1.0, 1.0), 2.0, PlannedPose(5.0, 5.0, 0.0), 'shortest')
     assert primitives[0] == Pen(False)
     up_to = primitives.index(Pen(True))
     travel = primitives[1:up_to]
