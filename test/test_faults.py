@@ -14,9 +14,10 @@ import rostest
 from std_msgs.msg import String
 from turtlesim.msg import Pose
 
-from turtle_letters.geometry import LAB_N
-from processes import LogWatch, NodeProcess, node_pid, simulator
-from turtle_letters.procstat import cpu_seconds, rss_mb
+from support.accuracy import LAB_N_VERTICES
+from support.nodes import (LogWatch, NodeProcess, PoseRecorder, node_pid, simulator, subscribed,
+                           wait_for_connections, wait_until)
+from support.procstat import cpu_seconds, rss_mb
 
 # Feedback mode at higher speeds draws the N in seconds; the timing of the
 # lab's mode is not what these tests are about.
@@ -33,15 +34,8 @@ class Faults(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('faults_test')
         cls.logs = LogWatch()
-        cls.poses = []
-        cls.lock = threading.Lock()
-        rospy.Subscriber('/turtle1/pose', Pose, cls.on_pose, queue_size=1000)
+        cls.poses = PoseRecorder()
         cls.chatter = rospy.Publisher('/chatter', String, queue_size=2000)
-
-    @classmethod
-    def on_pose(cls, msg):
-        with cls.lock:
-            cls.poses.append((time.time(), msg))
 
     def setUp(self):
         if rospy.has_param(CONTROLLER):
@@ -52,43 +46,37 @@ class Faults(unittest.TestCase):
         return process
 
     def wait_for_node(self, name, timeout=30):
-        deadline = time.time() + timeout
-        while time.time() < deadline:
-            try:
-                return node_pid(name)
-            except Exception:
-                time.sleep(0.2)
-        self.fail(f'{name} did not come up')
+        pid = []
 
-    def wait_for_chatter_subscriber(self):
-        deadline = time.time() + 20
-        while self.chatter.get_num_connections() == 0 and time.time() < deadline:
-            time.sleep(0.05)
-        time.sleep(0.3)
+        def up():
+            try:
+                pid.append(node_pid(name))
+            except Exception:
+                return False
+            return True
+        wait_until(up, timeout, f'{name} to come up')
+        return pid[0]
+
+    def wait_for_chatter_subscriber(self, with_poses=True):
+        """The controller hears /chatter (and, if asked, has turtlesim's poses)."""
+        wait_for_connections(self.chatter, what='the controller on /chatter')
+        if with_poses:
+            wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 20,
+                       "the controller's pose subscription")
 
     def moving_since(self, t0):
-        with self.lock:
-            return [m for t, m in self.poses if t >= t0 and (m.linear_velocity or m.angular_velocity)]
+        return self.poses.moving_since(t0)
 
-    def wait_until_still(self, t0, timeout=60, still_for=1.5):
-        deadline = time.time() + timeout
-        while time.time() < deadline:
-            with self.lock:
-                last_move = max((t for t, m in self.poses[-500:]
-                                 if t >= t0 and (m.linear_velocity or m.angular_velocity)),
-                                default=None)
-            if last_move and time.time() - last_move > still_for:
-                return True
-            time.sleep(0.1)
-        return False
+    def wait_until_still(self, t0, timeout=60):
+        self.poses.wait_until_still(t0, timeout)
+        return True
 
     def last_pose(self):
-        with self.lock:
-            return self.poses[-1][1]
+        return self.poses.last()
 
     def assert_at_n_end(self):
         p = self.last_pose()
-        self.assertLess(math.hypot(p.x - LAB_N[-1][0], p.y - LAB_N[-1][1]), 0.01)
+        self.assertLess(math.hypot(p.x - LAB_N_VERTICES[-1][0], p.y - LAB_N_VERTICES[-1][1]), 0.01)
 
     def assert_no_traceback(self, *processes):
         for process in processes:
@@ -129,10 +117,9 @@ class Faults(unittest.TestCase):
     def test_2_controller_before_the_simulator_keeps_the_trigger(self):
         ctl = self.start(controller())
         self.wait_for_node(CONTROLLER)
-        self.wait_for_chatter_subscriber()
+        self.wait_for_chatter_subscriber(with_poses=False)
         self.chatter.publish(String('P'))
-        time.sleep(3.0)
-        self.assertEqual(self.logs.count('Waiting for turtlesim', CONTROLLER), 1)
+        self.logs.wait_for('Waiting for turtlesim', 10, CONTROLLER)
         t0 = time.time()
         sim = self.start(simulator())
         self.assertTrue(self.wait_until_still(t0), 'the kept trigger was not drawn')
@@ -146,20 +133,21 @@ class Faults(unittest.TestCase):
         self.wait_for_node(CONTROLLER)
         rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
         self.wait_for_chatter_subscriber()
+        t0 = time.time()
         self.chatter.publish(String('P'))
-        time.sleep(1.0)
+        wait_until(lambda: self.moving_since(t0), 10, 'the drawing to start')
         t_kill = time.time()
         sim.send(signal.SIGKILL)
         sim.process.wait()
-        self.assertTrue(self.logs.wait_for('no pose from turtlesim', 5.0, CONTROLLER))
+        self.logs.wait_for('no pose from turtlesim', 5.0, CONTROLLER)
         noticed = [m for m in self.logs.messages if 'no pose from turtlesim' in m.msg][0]
         self.assertLess(noticed.header.stamp.to_sec() - t_kill, 2.5)
         self.assertTrue(ctl.alive())
 
         t0 = time.time()
         sim = self.start(simulator())
-        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
-        time.sleep(1.0)
+        wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 30,
+                   "the controller's pose subscription to the new simulator")
         self.chatter.publish(String('P'))
         self.assertTrue(self.wait_until_still(t0), 'no drawing after the simulator came back')
         self.assert_at_n_end()
@@ -171,19 +159,17 @@ class Faults(unittest.TestCase):
         pid = self.wait_for_node(CONTROLLER)
         rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
         self.wait_for_chatter_subscriber()
+        t0 = time.time()
         self.chatter.publish(String('P'))
-        deadline = time.time() + 10
-        while not self.moving_since(time.time() - 0.1) and time.time() < deadline:
-            time.sleep(0.05)
-        time.sleep(0.5)
+        wait_until(lambda: self.moving_since(t0), 10, 'the drawing to start')
+        time.sleep(0.5)                 # well into the drawing
         self.assertTrue(self.moving_since(time.time() - 0.2), 'not drawing')
         t_signal = time.time()
         os.kill(pid, sig)
         ctl.process.wait(15)
         exited = time.time()
-        time.sleep(1.5)
-        with self.lock:
-            after_exit = [m for t, m in self.poses if t > exited]
+        time.sleep(1.5)                 # coasting would show by now
+        after_exit = self.poses.since(exited)
         # turtlesim would coast for 1 s (62 ticks) without the stop message
         still_moving = [m for m in after_exit if m.linear_velocity or m.angular_velocity]
         self.assertLessEqual(len(still_moving), 2, f'{len(still_moving)} ticks of coasting')
@@ -238,7 +224,7 @@ class Faults(unittest.TestCase):
         for _ in range(50):
             self.chatter.publish(String(f'hello world {rospy.get_time()}'))
             rate.sleep()
-        self.assertTrue(self.logs.wait_for("chatter 'hello world", 5, CONTROLLER))
+        self.logs.wait_for("chatter 'hello world", 5, CONTROLLER)
         self.assertEqual(self.logs.count('ignored', CONTROLLER), 1)
 
     def test_9_a_storm_of_requests_leaves_the_controller_idle_and_ready(self):
@@ -251,9 +237,7 @@ class Faults(unittest.TestCase):
         rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
         self.wait_for_chatter_subscriber()
         text = rospy.Publisher(CONTROLLER + '/text', String, queue_size=2000)
-        deadline = time.time() + 20
-        while text.get_num_connections() == 0 and time.time() < deadline:
-            time.sleep(0.05)
+        wait_for_connections(text, what='the controller on ~text')
         self.logs.messages.clear()
 
         def storm(publisher, messages):
@@ -274,23 +258,26 @@ class Faults(unittest.TestCase):
         def ended():
             return (self.logs.count('Done drawing', CONTROLLER)
                     + self.logs.count('Drawing of', CONTROLLER))
-        deadline = time.time() + 60
-        while ended() < started() and time.time() < deadline:
-            time.sleep(0.1)
+        wait_until(lambda: ended() >= started(), 60, 'every drawing to end')
         self.assertGreater(started(), 2, 'the storm drew almost nothing: not a race')
         self.assertEqual(ended(), started(), 'a drawing never ended')
         self.assertEqual(self.logs.count('Drawing of', CONTROLLER), 0, 'a drawing failed')
 
         before, n_before = started(), self.logs.count("Drawing 'N'", CONTROLLER)
         self.chatter.publish(String('P'))
-        deadline = time.time() + 10
-        while started() == before and time.time() < deadline:
-            time.sleep(0.05)
+        wait_until(lambda: started() > before, 10, 'a drawing after the storm')
         time.sleep(2.0)             # a second drawing would have started by now
         self.assertEqual(started(), before + 1)
         self.assertEqual(self.logs.count("Drawing 'N'", CONTROLLER), n_before + 1)
         self.assertTrue(ctl.alive() and sim.alive())
         self.assert_no_traceback(ctl, sim)
+
+    def test_10_the_text_parameter_is_drawn_at_start_without_a_trigger(self):
+        self.start(simulator())
+        ctl = self.start(controller(*FAST, '_text:=HI', '_size:=1.5'))
+        self.logs.wait_for("Done drawing 'HI'", 120, CONTROLLER, explain=ctl.output)
+        self.assertEqual(self.logs.count("Drawing 'HI'", CONTROLLER), 1)
+        self.assert_no_traceback(ctl)
 
 
 if __name__ == '__main__':

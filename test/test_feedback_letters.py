@@ -15,7 +15,7 @@ from std_msgs.msg import String
 from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
-from turtle_letters.geometry import distance_to_polyline, touches_a_wall, vertex_errors
+from support.accuracy import distance_to_polyline, touches_a_wall, vertex_errors
 from turtle_letters.plan import Layout, Line, Pen, PlannedPose, glyph_for, glyph_strokes, plan_glyph
 
 VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)

@@ -11,9 +11,9 @@ import rospy
 import rostest
 from std_msgs.msg import String
 
-from processes import LogWatch, NodeProcess, node_pid
-from turtle_letters.procstat import cpu_seconds
-from terminal import Terminal
+from support.nodes import LogWatch, NodeProcess, node_pid
+from support.procstat import cpu_seconds
+from support.terminal import Terminal
 
 TALKER = '/talker'
 
@@ -53,7 +53,7 @@ class TalkerFaults(unittest.TestCase):
         os.close(read_end)
         os.write(write_end, b'x\nP\n')
         os.close(write_end)                                     # end of input
-        self.assertTrue(self.logs.wait_for('End of input', 15, TALKER), talker.output())
+        self.logs.wait_for('End of input', 15, TALKER, explain=talker.output)
         time.sleep(0.5)
         heard = []
         rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
@@ -70,7 +70,7 @@ class TalkerFaults(unittest.TestCase):
         os.close(read_end)
         os.write(write_end, b'P' * 100 + b'\n')
         os.close(write_end)
-        self.assertTrue(self.logs.wait_for('End of input', 15, TALKER), talker.output())
+        self.logs.wait_for('End of input', 15, TALKER, explain=talker.output)
         heard = []
         subscriber = rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
         self.addCleanup(subscriber.unregister)
@@ -104,7 +104,7 @@ class TalkerFaults(unittest.TestCase):
 
     def test_dev_null(self):
         talker, pid = self.start_talker(subprocess.DEVNULL)
-        self.assertTrue(self.logs.wait_for('End of input', 15, TALKER), talker.output())
+        self.logs.wait_for('End of input', 15, TALKER, explain=talker.output)
         self.assert_idles_then_ends_cleanly(talker, pid, signal.SIGINT)
 
     def test_stdin_closed(self):
@@ -115,7 +115,7 @@ class TalkerFaults(unittest.TestCase):
         talker.process = subprocess.Popen(
             ['bash', '-c', 'exec rosrun turtle_letters talker.py <&-'],
             stdout=open(talker.out_path, 'w'), stderr=subprocess.STDOUT)
-        self.assertTrue(self.logs.wait_for('No standard input', 15, TALKER), talker.output())
+        self.logs.wait_for('No standard input', 15, TALKER, explain=talker.output)
         self.assert_idles_then_ends_cleanly(talker, node_pid(TALKER), signal.SIGTERM)
 
     def test_sigterm_in_a_terminal_restores_it(self):

@@ -10,7 +10,7 @@ import rospy
 import rostest
 from std_msgs.msg import String
 
-from terminal import Terminal
+from support.terminal import Terminal
 
 # tmux key names; tmux sends each as the real terminal's escape sequence
 # (F1 is ESC O P, Up is ESC [ A, M-p is ESC p).

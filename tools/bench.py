@@ -2,12 +2,13 @@
 
 Runs the real nodes headless on a private roscore: the simulator (the real
 turtlesim where installed, else the bundled one) and the controller,
-triggered over /chatter, in timed and feedback mode, on an idle machine and
-with every core busy, several times each. Writes a table to the terminal,
+triggered over /chatter, in timed mode on the simulator's clock and on the
+wall clock (the lab's way, "timed-wall") and in feedback mode, on an idle
+machine and with every core busy, several times each. Writes a table to the terminal,
 bench-results/bench.json (every figure, the machine, the simulator) and
 bench-results/bench.png (ideal strokes and recorded paths, corners enlarged).
 
-Usage: bench.py [--reps N] [--letter N] [--modes timed,feedback] [--loads idle,loaded]
+Usage: bench.py [--reps N] [--letter N] [--modes timed,timed-wall,feedback] [--loads idle,loaded]
 """
 import argparse
 import json
@@ -18,7 +19,6 @@ import signal
 import statistics
 import subprocess
 import sys
-import threading
 import time
 
 PORT = 11499                      # a master of our own, away from 11311
@@ -31,9 +31,12 @@ from std_srvs.srv import Empty  # noqa: E402
 from turtlesim.msg import Pose as PoseMsg  # noqa: E402
 from turtlesim.srv import Spawn  # noqa: E402
 
-from turtle_letters.geometry import distance_to_polyline, vertex_errors  # noqa: E402
 from turtle_letters.plan import Layout, PlannedPose, glyph_for, glyph_strokes  # noqa: E402
-from turtle_letters.procstat import cpu_seconds, rss_mb  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'test'))
+from support.accuracy import distance_to_polyline, vertex_errors  # noqa: E402
+from support.nodes import PoseRecorder, wait_until  # noqa: E402
+from support.procstat import cpu_seconds, rss_mb  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
     'vertex_max_mm': {('timed', 'idle'): 8.0, ('timed', 'loaded'): 10.0,
@@ -44,6 +47,9 @@ TARGETS = {  # figure -> (limit, which runs it applies to)
 }
 LAB_DRAWING_S = 40.9
 SIM_RATE_HZ = 62.5
+# What each mode of the bench asks the controller for.
+MODES = {'timed': ('_mode:=timed', '_clock:=sim'), 'timed-wall': ('_mode:=timed', '_clock:=wall'),
+         'feedback': ('_mode:=feedback',)}
 
 
 
@@ -90,36 +96,10 @@ class Load:
             self.processes.stop(child, signal.SIGTERM)
 
 
-class Recorder:
-    def __init__(self):
-        self.lock = threading.Lock()
-        self.reset()
-        rospy.Subscriber('/turtle1/pose', PoseMsg, self.on_pose, queue_size=10000,
-                         tcp_nodelay=True)
-        rospy.Subscriber('/turtle1/cmd_vel', Twist, self.on_cmd_vel, queue_size=10000,
-                         tcp_nodelay=True)
-
-    def reset(self):
-        with getattr(self, 'lock', threading.Lock()):
-            self.poses, self.commands = [], []
-
-    def on_pose(self, msg):
-        with self.lock:
-            self.poses.append((time.time(), msg))
-
-    def on_cmd_vel(self, msg):
-        moving = bool(msg.linear.x or msg.linear.y or msg.angular.z)
-        with self.lock:
-            self.commands.append((time.time(), moving))
-
-
-def wait_for(condition, timeout, what):
-    deadline = time.time() + timeout
-    while time.time() < deadline:
-        if condition():
-            return
-        time.sleep(0.02)
-    raise RuntimeError(f'timed out waiting for {what}')
+def controller_ready(processes):
+    """The controller says Ready once its subscriptions are made."""
+    with open(os.path.join(processes.log_dir, 'controller.log')) as f:
+        return 'Ready' in f.read()
 
 
 def ideal_strokes(letter, size):
@@ -132,10 +112,10 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
     rospy.ServiceProxy('/reset', Empty)()
     controller = processes.start(
         'controller', 'rosrun', 'turtle_letters', 'turtle_controller.py',
-        f'_mode:={mode}', f'_letter:={args.letter}', f'_size:={args.size}')
+        *MODES[mode], f'_letter:={args.letter}', f'_size:={args.size}')
     try:
-        wait_for(lambda: chatter.get_num_connections() > 0, 30, 'the controller')
-        time.sleep(1.0)                              # its pose subscription settles
+        wait_until(lambda: chatter.get_num_connections() > 0, 30, 'the controller on /chatter')
+        wait_until(lambda: controller_ready(processes), 30, "the controller's Ready line")
         recorder.reset()
         sim_cpu0 = cpu_seconds(sim_pid)
         ctl_cpu0 = cpu_seconds(controller.pid)
@@ -146,7 +126,7 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
             with recorder.lock:
                 moving = [t for t, m in recorder.commands if m]
             return moving and time.time() - moving[-1] > 1.5
-        wait_for(finished, 300, 'the drawing to end')
+        wait_until(finished, 300, 'the drawing to end')
         with recorder.lock:
             commands = list(recorder.commands)
             poses = list(recorder.poses)
@@ -230,9 +210,22 @@ def limit_for(key, mode, load):
     return target.get((mode, load)) if isinstance(target, dict) else target
 
 
+def clock_ratios(results):
+    """The lab's wall clock against the simulator's, worst vertex, per load."""
+    worst = {(g['mode'], g['load']): g['summary']['vertex_max_mm']['worst']
+             for g in results['groups']}
+    lines = []
+    for load in ('idle', 'loaded'):
+        if ('timed', load) in worst and ('timed-wall', load) in worst:
+            sim, wall = worst[('timed', load)], worst[('timed-wall', load)]
+            lines.append(f'worst vertex, {load}: wall clock {wall:.1f} mm, simulator clock '
+                         f'{sim:.3f} mm: {wall / max(sim, 1e-3):.0f} times farther off')
+    return [''] + lines if lines else []
+
+
 def table(results, sim):
     lines = []
-    header = (f"{'mode':9}{'load':8}{'latency ms':>12}{'drawing s':>11}{'vertex mm':>11}"
+    header = (f"{'mode':11}{'load':8}{'latency ms':>12}{'drawing s':>11}{'vertex mm':>11}"
               f"{'path mm':>9}{'final mm':>10}{'ctl CPU %':>11}{'cmd_vel/s':>11}"
               f"{'sim Hz':>8}{'sim CPU %':>11}")
     lines.append(header)
@@ -255,8 +248,9 @@ def table(results, sim):
                     bad = abs(value - SIM_RATE_HZ) > SIM_RATE_HZ * 0.01
                 text = format(value, fmt) + ('!' if bad else ' ')
                 cells.append(text.rjust(width))
-            label = f'{mode:9}{load:8}' if stat == 'median' else f"{'  worst':17}"
+            label = f'{mode:11}{load:8}' if stat == 'median' else f"{'  worst':19}"
             lines.append(label + ''.join(cells))
+    lines.extend(clock_ratios(results))
     sim_f = results['simulator_figures']
     idle, ten = sim_f['idle'], sim_f['ten_moving']
 
@@ -272,6 +266,7 @@ def table(results, sim):
         f"{mark(format(ten['rss_mb'], '.0f'), ten['rss_mb'] <= 80)} MB")
     lines.append('Each group: median row, then worst over the repetitions. "!" marks a figure '
                  'outside its target.')
+    lines.append('timed-wall is the lab\'s own timing, shown for comparison: it has no targets.')
     lines.append('Targets: vertex <= 8 mm timed idle, <= 10 mm timed loaded, <= 1 mm feedback; '
                  'drawing 40.9 s timed idle; latency <= 10 ms; controller CPU <= 3%; '
                  'cmd_vel <= 100/s; simulator 62.5 Hz +-1% and <= 3% CPU idle, <= 10% CPU with ten '
@@ -284,7 +279,7 @@ def main():
     parser.add_argument('--reps', type=int, default=3)
     parser.add_argument('--letter', default='N')
     parser.add_argument('--size', type=float, default=3.0)
-    parser.add_argument('--modes', default='timed,feedback')
+    parser.add_argument('--modes', default='timed,timed-wall,feedback')
     parser.add_argument('--loads', default='idle,loaded')
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
@@ -303,7 +298,7 @@ def main():
         time.sleep(2.0)
         rospy.init_node('bench', disable_signals=True)
         rospy.wait_for_service('/reset', timeout=30)
-        recorder = Recorder()
+        recorder = PoseRecorder(with_commands=True)
         chatter = rospy.Publisher('/chatter', String, queue_size=10)
         print(f'bench: simulator {sim_kind}, {os.cpu_count()} cores; measuring the idle simulator...',
               flush=True)

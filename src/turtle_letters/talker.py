@@ -119,12 +119,14 @@ class Talker(rospy.SubscribeListener):
             rospy.loginfo('Published kept %r on %s', message, topic_name)
 
 
-def pass_keys(talker, fd, signals):
+def pass_keys(talker, fd, wait):
     """Hand every key read from fd to the talker, escape sequences dropped.
-    Returns at the end of input or at shutdown."""
+    `wait(fd, timeout)` (SignalPipe.wait in the node) says when fd is READY
+    to read, or that the timeout passed or shutdown is due. Returns at the
+    end of input or at shutdown."""
     decoder = KeyDecoder()
     while True:
-        event = signals.wait(fd, ESCAPE_WAIT if decoder.pending else None)
+        event = wait(fd, ESCAPE_WAIT if decoder.pending else None)
         if event == SHUTDOWN:
             return
         if event == TIMED_OUT:
@@ -143,7 +145,7 @@ def read_terminal(talker, fd, prompt, signals):
     try:
         tty.setcbreak(fd, termios.TCSANOW)
         prompt()
-        pass_keys(talker, fd, signals)
+        pass_keys(talker, fd, signals.wait)
     finally:
         termios.tcsetattr(fd, termios.TCSADRAIN, saved)
 
@@ -180,7 +182,7 @@ def main():
             sys.stdout.flush()
         read_terminal(talker, fd, prompt, signals)
     else:
-        pass_keys(talker, fd, signals)
+        pass_keys(talker, fd, signals.wait)
         if not rospy.is_shutdown():
             rospy.loginfo('End of input: no more keys to read; the talker stays up '
                           'until shut down (kept presses still go out)')

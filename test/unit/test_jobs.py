@@ -31,6 +31,12 @@ def test_typed_keys_wait_their_turn_up_to_the_limit():
     assert drawn == ['B', 'C', 'E', None]
 
 
+def test_up_to_32_typed_keys_wait():
+    jobs = Jobs()
+    assert all(jobs.offer_key('A') for _ in range(32))
+    assert not jobs.offer_key('B')
+
+
 def test_take_times_out_with_nothing_to_draw():
     assert Jobs().take(0.05) is None
 

@@ -1,6 +1,6 @@
 import pytest
 
-from turtle_letters.geometry import (distance_to_polyline, distance_to_segment, touches_a_wall,
+from support.accuracy import (distance_to_polyline, distance_to_segment, touches_a_wall,
                                      vertex_errors, worst_distance_from)
 
 

@@ -2,10 +2,10 @@
 the tests and the benchmark both use it."""
 import math
 
-from .plan import WORLD_SIZE
+from turtle_letters.plan import WORLD_SIZE
 
 # The lab's ideal N from the turtle's start pose (the lab's own figures).
-LAB_N = [(5.5444, 5.5444), (5.5444, 8.5444), (8.0193, 6.0696), (8.0193, 9.0696)]
+LAB_N_VERTICES = [(5.5444, 5.5444), (5.5444, 8.5444), (8.0193, 6.0696), (8.0193, 9.0696)]
 
 
 def distance_to_segment(p, a, b):

@@ -1,0 +1,159 @@
+"""Real nodes for tests and the benchmark: started and stopped as processes,
+waited for on conditions (never for a fixed time), their poses and logs
+recorded."""
+import os
+import signal
+import subprocess
+import tempfile
+import threading
+import time
+import xmlrpc.client
+
+import rosgraph
+import rospy
+from geometry_msgs.msg import Twist
+from rosgraph_msgs.msg import Log
+from turtlesim.msg import Pose
+
+
+def wait_until(condition, timeout, what, explain=None):
+    """Poll `condition` until it is true; after `timeout` s fail, saying
+    what was waited for (and what `explain()` returns, if given)."""
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        if condition():
+            return
+        time.sleep(0.02)
+    detail = f'\n{explain()}' if explain else ''
+    raise AssertionError(f'waited {timeout:g} s for {what}, in vain{detail}')
+
+
+def wait_for_connections(endpoint, timeout=20, what=None):
+    """A publisher or subscriber of ours is connected to someone."""
+    wait_until(lambda: endpoint.get_num_connections() > 0, timeout,
+               what or f'a connection on {endpoint.resolved_name}')
+
+
+def subscribed(node, topic):
+    """Whether `node` has a live incoming connection on `topic` (asked of the
+    node itself, over its XML-RPC API)."""
+    try:
+        uri = rosgraph.Master(rospy.get_name()).lookupNode(node)
+        _, _, connections = xmlrpc.client.ServerProxy(uri).getBusInfo(rospy.get_name())
+    except Exception:
+        return False
+    return any(c[2] == 'i' and c[4] == topic and c[5] for c in connections)
+
+
+class NodeProcess:
+    """`rosrun PKG EXE args...` with its output kept in files."""
+
+    def __init__(self, *command, stdin=subprocess.DEVNULL, **env):
+        self.dir = tempfile.mkdtemp(prefix='turtle_letters_node_')
+        self.out_path = os.path.join(self.dir, 'out')
+        with open(self.out_path, 'w') as out:
+            self.process = subprocess.Popen(['rosrun', *command], stdin=stdin, stdout=out,
+                                            stderr=subprocess.STDOUT,
+                                            env=dict(os.environ, **env))
+
+    @property
+    def pid(self):
+        return self.process.pid
+
+    def output(self):
+        with open(self.out_path) as f:
+            return f.read()
+
+    def alive(self):
+        return self.process.poll() is None
+
+    def send(self, sig):
+        self.process.send_signal(sig)
+
+    def stop(self, sig=signal.SIGINT, timeout=15):
+        if self.alive():
+            self.process.send_signal(sig)
+            try:
+                self.process.wait(timeout)
+            except subprocess.TimeoutExpired:
+                self.process.kill()
+                self.process.wait()
+        return self.process.returncode
+
+
+def simulator():
+    return NodeProcess('turtlesim', 'turtlesim_node', QT_QPA_PLATFORM='offscreen')
+
+
+def node_pid(name):
+    """The pid a running node reports for itself over its XML-RPC API."""
+    uri = rosgraph.Master(rospy.get_name()).lookupNode(name)
+    return xmlrpc.client.ServerProxy(uri).getPid(rospy.get_name())[2]
+
+
+class LogWatch:
+    """Every /rosout message, to count and search."""
+
+    def __init__(self):
+        self.messages = []
+        rospy.Subscriber('/rosout', Log, self.messages.append, queue_size=5000)
+
+    def count(self, text, node=None):
+        return sum(1 for m in self.messages
+                   if text in m.msg and (node is None or m.name == node))
+
+    def wait_for(self, text, timeout, node=None, explain=None):
+        """Wait for a line containing `text`; fails if none comes in time."""
+        wait_until(lambda: self.count(text, node), timeout,
+                   f'a log line with {text!r}' + (f' from {node}' if node else ''), explain)
+
+
+class PoseRecorder:
+    """Every pose of turtle1 with the time it came (and, if asked, whether
+    each cmd_vel moved the turtle)."""
+
+    def __init__(self, with_commands=False):
+        self.lock = threading.Lock()
+        self.poses, self.commands = [], []
+        self._subscriber = rospy.Subscriber('/turtle1/pose', Pose, self._on_pose,
+                                            queue_size=10000, tcp_nodelay=True)
+        if with_commands:
+            rospy.Subscriber('/turtle1/cmd_vel', Twist, self._on_cmd_vel, queue_size=10000,
+                             tcp_nodelay=True)
+
+    def _on_pose(self, msg):
+        with self.lock:
+            self.poses.append((time.time(), msg))
+
+    def _on_cmd_vel(self, msg):
+        with self.lock:
+            self.commands.append((time.time(), bool(msg.linear.x or msg.linear.y or msg.angular.z)))
+
+    def wait_connected(self, timeout=30):
+        wait_for_connections(self._subscriber, timeout, "turtlesim's poses")
+
+    def reset(self):
+        with self.lock:
+            self.poses, self.commands = [], []
+
+    def since(self, t0):
+        with self.lock:
+            return [m for t, m in self.poses if t >= t0]
+
+    def path(self, t0=0.0):
+        return [(m.x, m.y) for m in self.since(t0)]
+
+    def last(self):
+        with self.lock:
+            return self.poses[-1][1]
+
+    def moving_since(self, t0):
+        return [m for m in self.since(t0) if m.linear_velocity or m.angular_velocity]
+
+    def wait_until_still(self, t0, timeout, still_for=1.5):
+        """Motion after t0, then `still_for` s without any; fails otherwise."""
+        def still():
+            moved = [t for t, m in self.poses[-500:]
+                     if t >= t0 and (m.linear_velocity or m.angular_velocity)]
+            return moved and time.time() - moved[-1] > still_for
+        wait_until(still, timeout, 'the turtle to move and then stop')
