@@ -21,7 +21,7 @@ from .driver import DrawingAborted, TurtleDriver
 from .drawing import LetterDrawer
 from .jobs import Jobs
 from .motion import EXECUTORS, STOP, TimedExecutor
-from .plan import DoesNotFit, Line, PlannedPose, Turn, glyph_for, undrawable, wrap
+from .plan import DoesNotFit, Line, PlannedPose, Turn, wrap
 from .settings import ParameterError, Settings, quote_unreadable
 
 # Ignored messages can come at any rate (the tutorial talker sends "hello
@@ -51,8 +51,9 @@ class TurtleController(LetterDrawer):
         data = msg.data
         shown = repr(data if len(data) <= 40 else data[:40] + '...')
         if self.settings.typing:
-            if data == ' ' or (len(data) == 1 and glyph_for(data) is not None):
-                self.type_key(data.upper())
+            font = self.settings.font
+            if data == ' ' or (len(data) == 1 and font.glyph(data) is not None):
+                self.type_key(data if font.case_sensitive else data.upper())
             else:
                 rospy.loginfo_throttle(IGNORED_LOG_PERIOD, 'chatter %s ignored: typing mode draws '
                                        'single letters or digits' + THROTTLED, shown)
@@ -63,9 +64,11 @@ class TurtleController(LetterDrawer):
                                    + THROTTLED, shown, self.settings.trigger)
 
     def _on_text(self, msg):
-        text = msg.data.upper()
-        if not text.strip() or undrawable(text):
-            rospy.logwarn('~text %r refused: only A-Z, 0-9 and spaces can be drawn', msg.data[:40])
+        font = self.settings.font
+        text = msg.data if font.case_sensitive else msg.data.upper()
+        if not text.strip() or font.undrawable(text):
+            rospy.logwarn('~text %r refused: font %s has no glyph for %s', msg.data[:40],
+                          font.name, font.undrawable(text)[:10] or 'a blank text')
             return
         self.request(text, '~text')
 

@@ -9,7 +9,7 @@ TurtleController with ROS, a recorder in the unit tests.
 """
 import math
 
-from .plan import Layout, Pen, PlannedPose, Turn, glyph_for, plan_glyph
+from .plan import Layout, Pen, PlannedPose, Turn, plan_glyph
 
 
 class LetterDrawer:
@@ -25,7 +25,7 @@ class LetterDrawer:
         """The places of `text`'s characters and whether the canvas must be
         cleared first; raises plan.DoesNotFit (then nothing was reserved)."""
         if self._layout is None:
-            self._layout = Layout((where.x, where.y), self.settings.size)
+            self._layout = Layout((where.x, where.y), self.settings.size, self.settings.font)
         return self._layout.reserve(text)
 
     def trace(self, text, places, must_clear, start: PlannedPose):
@@ -38,7 +38,8 @@ class LetterDrawer:
         for char, place in zip(text, places):
             if place is None:
                 continue
-            primitives, pose = plan_glyph(glyph_for(char), place, s.size, pose, s.turn_direction)
+            primitives, pose = plan_glyph(s.font.glyph(char), place, s.size, pose,
+                                          s.turn_direction)
             for primitive in primitives:
                 self._carry_out(primitive)
 

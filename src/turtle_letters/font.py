@@ -79,3 +79,31 @@ FONT: Dict[str, Glyph] = {
 }
 
 SPACE_WIDTH = 0.6   # a space in text advances like a letter but draws nothing
+
+
+class Font(NamedTuple):
+    """A stroke font, in letter heights: its glyphs and the room they need.
+    A glyph's strokes run from x = 0 to its width; y = 0 is the baseline."""
+    name: str
+    glyphs: Dict[str, Glyph]
+    ascent: float           # the highest point above the baseline
+    descent: float          # the lowest point below it (0 or more)
+    letter_spacing: float   # between two glyphs' boxes
+    line_height: float      # baseline to baseline
+    space_width: float
+    case_sensitive: bool    # the builtin font draws lower case as upper case
+    overhang: float = 0.0   # how far strokes reach past a glyph's edges (cursive joins)
+
+    def glyph(self, char: str):
+        return self.glyphs.get(char if self.case_sensitive else char.upper())
+
+    def undrawable(self, text: str) -> List[str]:
+        """The characters of `text` with no glyph (spaces are fine: they advance)."""
+        return sorted({c for c in text if c != ' ' and self.glyph(c) is None})
+
+    @property
+    def widest(self) -> float:
+        return max(g.width for g in self.glyphs.values())
+
+
+BUILTIN = Font('builtin', FONT, ASCENT, 0.0, LETTER_SPACING, LINE_HEIGHT, SPACE_WIDTH, False)

@@ -8,12 +8,10 @@ No ROS here. A drawing is a list of primitives: Turn (in place), Line
 import math
 from typing import List, NamedTuple, Optional, Tuple
 
-from .font import ASCENT, FONT, LETTER_SPACING, LINE_HEIGHT, SPACE_WIDTH, Glyph
+from .font import BUILTIN, Font, Glyph
 
 WORLD_SIZE = 499 / 45.0     # turtlesim's usable canvas, meters
 MARGIN = 0.5                # no stroke comes closer than this to a wall
-WIDEST = max(g.width for g in FONT.values())
-LARGEST_SIZE = (WORLD_SIZE - 2 * MARGIN) / max(ASCENT, WIDEST)
 TURN_DIRECTIONS = ('ccw', 'shortest')
 
 
@@ -100,13 +98,22 @@ def plan_glyph(glyph: Glyph, origin: Tuple[float, float], size: float, start: Pl
     return primitives, pose
 
 
-def glyph_for(char: str) -> Optional[Glyph]:
-    return FONT.get(char.upper())
+def glyph_for(char: str, font: Font = BUILTIN) -> Optional[Glyph]:
+    return font.glyph(char)
 
 
-def undrawable(text: str) -> List[str]:
+def undrawable(text: str, font: Font = BUILTIN) -> List[str]:
     """The characters of `text` with no glyph (spaces are fine: they advance)."""
-    return sorted({c for c in text if c != ' ' and glyph_for(c) is None})
+    return font.undrawable(text)
+
+
+def largest_size(font: Font = BUILTIN) -> float:
+    """The largest letter height at which the font's widest glyph fits."""
+    return (WORLD_SIZE - 2 * MARGIN) / max(font.ascent + font.descent,
+                                           font.widest + 2 * font.overhang)
+
+
+LARGEST_SIZE = largest_size(BUILTIN)
 
 
 class Layout:
@@ -114,18 +121,22 @@ class Layout:
     `first_place`, then to the right, then a new line below at the left
     margin; when the canvas is full, it is cleared and we start again."""
 
-    def __init__(self, first_place: Tuple[float, float], size: float) -> None:
+    def __init__(self, first_place: Tuple[float, float], size: float,
+                 font: Font = BUILTIN) -> None:
         self.size = size
-        if not self.fits_at(*first_place, WIDEST):
+        self.font = font
+        if not self.fits_at(*first_place, font.widest):
             # The turtle starts too near a wall for this size: begin top left.
-            first_place = (MARGIN, WORLD_SIZE - MARGIN - ASCENT * size)
+            first_place = (MARGIN, WORLD_SIZE - MARGIN - font.ascent * size)
         self.first_place = first_place
         self.cursor = first_place
 
     def fits_at(self, x: float, y: float, width: float) -> bool:
         high = WORLD_SIZE - MARGIN
-        return (MARGIN <= x and x + width * self.size <= high
-                and MARGIN <= y and y + ASCENT * self.size <= high)
+        reach = self.font.overhang * self.size
+        return (MARGIN <= x - reach and x + width * self.size + reach <= high
+                and MARGIN <= y - self.font.descent * self.size
+                and y + self.font.ascent * self.size <= high)
 
     def places(self, widths: List[float], cursor: Tuple[float, float]):
         """Where boxes of these widths go from `cursor`, or None once the canvas is full."""
@@ -133,11 +144,11 @@ class Layout:
         placed = []
         for width in widths:
             if not self.fits_at(x, y, width):
-                x, y = MARGIN, y - LINE_HEIGHT * self.size
+                x, y = MARGIN, y - self.font.line_height * self.size
                 if not self.fits_at(x, y, width):
                     return None, cursor
             placed.append((x, y))
-            x += (width + LETTER_SPACING) * self.size
+            x += (width + self.font.letter_spacing) * self.size
         return placed, (x, y)
 
     def how_many_fit(self, widths: List[float]) -> int:
@@ -149,7 +160,8 @@ class Layout:
     def reserve(self, text: str):
         """Places for every character of `text` (None for a space) and
         whether the canvas must be cleared first; raises DoesNotFit."""
-        widths = [SPACE_WIDTH if c == ' ' else glyph_for(c).width for c in text]
+        font = self.font
+        widths = [font.space_width if c == ' ' else font.glyph(c).width for c in text]
         placed, cursor = self.places(widths, self.cursor)
         cleared = False
         if placed is None:

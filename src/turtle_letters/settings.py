@@ -7,9 +7,10 @@ from typing import Callable, NamedTuple
 
 import yaml
 
-from .font import FONT
+from .font import BUILTIN
+from .hershey import FontError, load_font
 from .motion import CLOCKS, EXECUTORS
-from .plan import LARGEST_SIZE, TURN_DIRECTIONS, glyph_for, undrawable
+from .plan import TURN_DIRECTIONS, largest_size
 
 
 DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own: r, g, b, width in pixels
@@ -19,62 +20,74 @@ class ParameterError(ValueError):
     pass
 
 
-# -- what a value may be: each check returns the value to use, or raises -----
-def _string(value):
+# -- what a value may be: each check gets the value and the font chosen
+# (the builtin one until ~font is read), and returns the value to use or raises
+def _string(value, font=None):
     if not isinstance(value, str):
         raise ValueError('a string')
     return value
 
 
-def _trigger(value):
+def _trigger(value, font=None):
     if not isinstance(value, str) or not value.strip():
         raise ValueError('a non-blank string')
     return value
 
 
-def _letter(value):
-    letter = _string(value).upper()
-    if len(letter) != 1 or glyph_for(letter) is None:
-        raise ValueError(f'one of {"".join(sorted(FONT))}')
+def _font(value, font=None):
+    try:
+        return load_font(_string(value))
+    except FontError as e:
+        raise ValueError(str(e)) from None
+
+
+def _characters(font):
+    return 'A-Z, 0-9' if font is BUILTIN else f'a character of {font.name}'
+
+
+def _letter(value, font):
+    letter = _string(value) if font.case_sensitive else _string(value).upper()
+    if len(letter) != 1 or font.glyph(letter) is None:
+        raise ValueError(f'one of {"".join(sorted(font.glyphs))}')
     return letter
 
 
-def _text(value):
-    text = _string(value).upper()
-    if undrawable(text):
-        raise ValueError(f'A-Z, 0-9 and space (no glyph for {undrawable(text)})')
+def _text(value, font):
+    text = _string(value) if font.case_sensitive else _string(value).upper()
+    if font.undrawable(text):
+        raise ValueError(f'{_characters(font)} and space (no glyph for {font.undrawable(text)})')
     return text
 
 
-def _positive(value):
+def _positive(value, font=None):
     if isinstance(value, bool) or not isinstance(value, (int, float)) \
             or not math.isfinite(value) or value <= 0:
         raise ValueError('a number > 0')
     return float(value)
 
 
-def _size(value):
+def _size(value, font):
     size = _positive(value)
-    if size > LARGEST_SIZE:
-        raise ValueError(f'up to {LARGEST_SIZE:.2f}, the largest letter that fits the canvas')
+    if size > largest_size(font):
+        raise ValueError(f'up to {largest_size(font):.2f}, the largest letter that fits the canvas')
     return size
 
 
-def _boolean(value):
+def _boolean(value, font=None):
     if not isinstance(value, bool):
         raise ValueError('true or false')
     return value
 
 
 def _one_of(*allowed):
-    def check(value):
+    def check(value, font=None):
         if value not in allowed:
             raise ValueError(', '.join(allowed))
         return value
     return check
 
 
-def _pen(value):
+def _pen(value, font=None):
     parts = value.split() if isinstance(value, str) else value
     numbers = [_integer(p) for p in parts] if isinstance(parts, list) else []
     if len(numbers) == 4 and None not in numbers:
@@ -90,7 +103,7 @@ class Parameter(NamedTuple):
     default: str        # as the launch argument's default
     unit: str
     meaning: str
-    check: Callable[[object], object]
+    check: Callable[[object, object], object]
 
 
 # The controller's private parameters: the one table. The launch file has an
@@ -98,6 +111,8 @@ class Parameter(NamedTuple):
 # test/unit/test_parameter_table.py fails when they disagree.
 PARAMETERS = (
     Parameter('trigger', 'str', 'P', '', 'the chatter message that starts a drawing', _trigger),
+    Parameter('font', 'str', 'builtin', '',
+              'builtin (A-Z, 0-9; the lab\'s N) or a Hershey font of hershey-fonts-data', _font),
     Parameter('letter', 'str', 'N', '', 'what a trigger draws: A-Z or 0-9', _letter),
     Parameter('size', 'float', '3.0', 'm', "letter height (the lab's N: 3.0)", _size),
     Parameter('mode', 'str', 'timed', '',
@@ -138,13 +153,14 @@ def launch_value(text, type_):
     return text
 
 
-def read_parameter(name, get):
-    """One parameter of the table, read with `get(name, default)` and checked;
-    a bad value raises ParameterError saying what was given and what is allowed."""
+def read_parameter(name, get, font=BUILTIN):
+    """One parameter of the table, read with `get(name, default)` and checked
+    (against `font`, for the characters and sizes it has); a bad value raises
+    ParameterError saying what was given and what is allowed."""
     p = TABLE[name]
     value = get('~' + name, launch_value(p.default, p.type))
     try:
-        return p.check(value)
+        return p.check(value, font)
     except ValueError as e:
         unit = f' ({p.unit})' if p.unit else ''
         raise ParameterError(f'~{name} is {value!r}; allowed: {e}{unit}') from None
@@ -155,8 +171,9 @@ class Settings:
 
     def __init__(self, get):
         """`get(name, default)` reads one parameter (rospy.get_param in the node)."""
-        for p in PARAMETERS:
-            setattr(self, p.name, read_parameter(p.name, get))
+        self.font = BUILTIN
+        for p in PARAMETERS:      # ~font comes before what depends on it
+            setattr(self, p.name, read_parameter(p.name, get, self.font))
 
 
 def _integer(value):
