@@ -16,7 +16,8 @@ from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
 from support.accuracy import distance_to_polyline, touches_a_wall, vertex_errors
-from turtle_letters.plan import Layout, Line, Pen, PlannedPose, glyph_for, glyph_strokes, plan_glyph
+from turtle_letters.plan import Layout, Line, Pen, PlannedPose, plan_strokes, word_strokes
+from turtle_letters.route import order_strokes
 
 VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
 BACKGROUND = (69, 86, 255)
@@ -25,23 +26,17 @@ BACKGROUND = (69, 86, 255)
 def expected(text, start, size, direction):
     """Strokes and pen-up travel segments, by the package's own plan."""
     places, _ = Layout((start.x, start.y), size).reserve(text)
-    strokes, travel = [], []
-    pose = start
-    for char, place in zip(text, places):
-        if place is None:
-            continue
-        glyph = glyph_for(char)
-        strokes += glyph_strokes(glyph, place, size)
-        primitives, end = plan_glyph(glyph, place, size, pose, direction)
-        pen_down, here = True, (pose.x, pose.y)
-        for p in primitives:
-            if isinstance(p, Pen):
-                pen_down = p.down
-            elif isinstance(p, Line):
-                if not pen_down:
-                    travel.append([here, (p.x, p.y)])
-                here = (p.x, p.y)
-        pose = end
+    strokes = order_strokes(word_strokes(text, places, size), (start.x, start.y))
+    primitives, _ = plan_strokes(strokes, start, direction)
+    travel = []
+    pen_down, here = True, (start.x, start.y)
+    for p in primitives:
+        if isinstance(p, Pen):
+            pen_down = p.down
+        elif isinstance(p, Line):
+            if not pen_down:
+                travel.append([here, (p.x, p.y)])
+            here = (p.x, p.y)
     return strokes, travel
 
 

@@ -32,9 +32,8 @@ class TypingInATerminal(unittest.TestCase):
         places, _ = Layout((first.x, first.y), SIZE).reserve('HI')
         h = [v for s in glyph_strokes(glyph_for('H'), places[0], SIZE) for v in s]
         i = [v for s in glyph_strokes(glyph_for('I'), places[1], SIZE) for v in s]
-        end = glyph_strokes(glyph_for('I'), places[1], SIZE)[-1][-1]
-        wait_until(lambda: max(vertex_errors(poses.path() or [(0, 0)], [end])) < 0.002, 200,
-                   'the turtle at the end of the I', term.screen)
+        wait_until(lambda: max(vertex_errors(poses.path() or [(0, 0)], i)) < 0.002, 200,
+                   'every vertex of the I', term.screen)
         path = poses.path()
         self.assertLess(max(vertex_errors(path, h)), 0.002, 'H not drawn:\n' + term.screen())
         self.assertLess(max(vertex_errors(path, i)), 0.002, 'I not drawn:\n' + term.screen())

@@ -9,7 +9,8 @@ TurtleController with ROS, a recorder in the unit tests.
 """
 import math
 
-from .plan import Layout, Pen, PlannedPose, Turn, plan_glyph
+from .plan import Layout, Pen, PlannedPose, Turn, plan_strokes, word_strokes
+from .route import order_strokes
 
 
 class LetterDrawer:
@@ -28,20 +29,21 @@ class LetterDrawer:
             self._layout = Layout((where.x, where.y), self.settings.size, self.settings.font)
         return self._layout.reserve(text)
 
+    def plan(self, text, places, start: PlannedPose):
+        """The strokes of `text` at `places`, in the order that travels least
+        with the pen up, and the primitives that draw them from `start`."""
+        s = self.settings
+        strokes = order_strokes(word_strokes(text, places, s.size, s.font), (start.x, start.y))
+        primitives, _ = plan_strokes(strokes, start, s.turn_direction)
+        return strokes, primitives
+
     def trace(self, text, places, must_clear, start: PlannedPose):
         """Draw `text` at `places` (from reserve), from the turtle's `start`."""
-        s = self.settings
         if must_clear:
             self.clear()
         self.pen(True)
-        pose = start
-        for char, place in zip(text, places):
-            if place is None:
-                continue
-            primitives, pose = plan_glyph(s.font.glyph(char), place, s.size, pose,
-                                          s.turn_direction)
-            for primitive in primitives:
-                self._carry_out(primitive)
+        for primitive in self.plan(text, places, start)[1]:
+            self._carry_out(primitive)
 
     def _carry_out(self, primitive):
         if isinstance(primitive, Pen):

@@ -79,9 +79,9 @@ def glyph_strokes(glyph: Glyph, origin: Tuple[float, float], size: float):
     return [[(ox + size * gx, oy + size * gy) for gx, gy in stroke] for stroke in glyph.strokes]
 
 
-def plan_glyph(glyph: Glyph, origin: Tuple[float, float], size: float, start: PlannedPose,
-               direction: str = 'ccw'):
-    """Primitives that draw `glyph`, starting from the turtle's `start` pose.
+def plan_strokes(strokes, start: PlannedPose, direction: str = 'ccw'):
+    """Primitives that draw `strokes` (in meters) in this order, starting
+    from the turtle's `start` pose; returns them and the end pose.
 
     The pen is lifted only to travel to a stroke that does not start where
     the turtle is, so the lab's N from its start point is exactly the lab's
@@ -89,13 +89,25 @@ def plan_glyph(glyph: Glyph, origin: Tuple[float, float], size: float, start: Pl
     """
     primitives = []
     pose = start
-    for stroke in glyph_strokes(glyph, origin, size):
+    for stroke in strokes:
         if math.hypot(stroke[0][0] - pose.x, stroke[0][1] - pose.y) > 1e-9:
             travel, pose = path(stroke[:1], pose, direction)
             primitives += [Pen(False)] + travel + [Pen(True)]
         drawn, pose = path(stroke[1:], pose, direction)
         primitives += drawn
     return primitives, pose
+
+
+def plan_glyph(glyph: Glyph, origin: Tuple[float, float], size: float, start: PlannedPose,
+               direction: str = 'ccw'):
+    """Primitives that draw `glyph` with its bottom-left corner at `origin`."""
+    return plan_strokes(glyph_strokes(glyph, origin, size), start, direction)
+
+
+def word_strokes(text: str, places, size: float, font: Font = BUILTIN):
+    """Every stroke of `text` in meters, in reading order (places from Layout)."""
+    return [stroke for char, place in zip(text, places) if place is not None
+            for stroke in glyph_strokes(font.glyph(char), place, size)]
 
 
 def glyph_for(char: str, font: Font = BUILTIN) -> Optional[Glyph]:

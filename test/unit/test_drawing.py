@@ -51,8 +51,9 @@ def test_feedback_mode_steers_the_same_primitives():
 def test_travel_to_a_stroke_lifts_the_pen():
     calls = Recorder(size=1.0).draw('K')
     pens = [c for c in calls if c[0] == 'pen']
-    # K's three strokes each start away from where the turtle is
-    assert pens == [('pen', True)] + [('pen', False), ('pen', True)] * 3
+    # K's three strokes: the turtle starts at the bottom-left corner, on the
+    # end of the upright, which it draws from there; then two travels
+    assert pens == [('pen', True)] + [('pen', False), ('pen', True)] * 2
 
 
 def test_a_full_canvas_is_cleared_and_drawing_starts_again_at_the_first_place():
