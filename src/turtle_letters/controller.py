@@ -12,6 +12,7 @@ sequence cut into states; the thread keeps it a plain sequence.
 import math
 import sys
 import threading
+import time
 import traceback
 
 import rospy
@@ -20,7 +21,7 @@ from std_msgs.msg import String
 from .driver import DrawingAborted, TurtleDriver
 from .drawing import LetterDrawer
 from .jobs import Jobs
-from .motion import EXECUTORS, STOP, TimedExecutor
+from .motion import EXECUTORS, STOP, SmoothExecutor, TimedExecutor
 from .plan import DoesNotFit, Line, PlannedPose, Turn, wrap
 from .settings import ParameterError, Settings, quote_unreadable
 
@@ -28,6 +29,7 @@ from .settings import ParameterError, Settings, quote_unreadable
 # world" at 10 Hz on chatter): the first is said, then one per period.
 IGNORED_LOG_PERIOD = 10.0
 THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
+PROGRESS_PERIOD = 5.0       # s between two progress lines of a drawing
 
 
 class TurtleController(LetterDrawer):
@@ -39,6 +41,7 @@ class TurtleController(LetterDrawer):
         super().__init__(settings)
         self.driver = TurtleDriver()
         self.jobs = Jobs()
+        self._started = self._last_progress = 0.0
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=10)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
         self._worker = threading.Thread(target=self._work, name='drawing', daemon=True)
@@ -102,6 +105,23 @@ class TurtleController(LetterDrawer):
         self._fresh_pose()
         self._execute(primitive, EXECUTORS['feedback'])
 
+    def glide(self, points):
+        """Smooth mode: trace the polyline through `points` without stopping."""
+        if points:
+            self._fresh_pose()
+            self._run(SmoothExecutor(points, self.settings.linear_speed),
+                      f'glide through {len(points)} points')
+
+    def progress(self, ink_drawn, ink):
+        """Every few seconds of a drawing: how far it is, and how long to go."""
+        now = time.monotonic()
+        if now - self._last_progress < PROGRESS_PERIOD or not 0 < ink_drawn < ink:
+            return
+        self._last_progress = now
+        elapsed = now - self._started
+        rospy.loginfo('%.0f%% of the ink drawn (%.2f of %.2f m); about %.0f s to go',
+                      100 * ink_drawn / ink, ink_drawn, ink, elapsed * (ink - ink_drawn) / ink_drawn)
+
     def pen(self, down):
         self.driver.set_pen(self.settings.pen, down)
 
@@ -118,16 +138,18 @@ class TurtleController(LetterDrawer):
         return pose
 
     def _execute(self, primitive, executor_type):
-        """One command per pose until the executor is done, then a stop."""
         s = self.settings
-        executor = executor_type(primitive, s.linear_speed, s.angular_speed)
-        rospy.loginfo('%s: start at %s', _describe(primitive), _pose_text(self.driver.latest_pose))
+        self._run(executor_type(primitive, s.linear_speed, s.angular_speed), _describe(primitive))
+
+    def _run(self, executor, description):
+        """One command per pose until the executor is done, then a stop."""
+        rospy.loginfo('%s: start at %s', description, _pose_text(self.driver.latest_pose))
         command = executor.start(self.driver.latest_pose)
         while command is not None:
             self.driver.publish(command)
             command = executor.update(self.driver.next_pose())
         self.driver.publish(STOP)
-        rospy.loginfo('%s: end at %s', _describe(primitive), _pose_text(self.driver.latest_pose))
+        rospy.loginfo('%s: end at %s', description, _pose_text(self.driver.latest_pose))
 
     # -- the drawing thread ----------------------------------------------------
     def _work(self):
@@ -149,8 +171,11 @@ class TurtleController(LetterDrawer):
         pose = self.driver.wait_for_pose()
         start = PlannedPose(pose.x, pose.y, pose.theta)
         places, must_clear = self.reserve(text, start)
-        rospy.loginfo('Drawing %r (%s mode)', text, self.settings.mode)
-        self.trace(text, places, must_clear, start)
+        plan = self.plan(text, places, start)
+        rospy.loginfo('Drawing %r (%s mode): ink %.2f m, travel %.2f m, about %.0f s', text,
+                      self.settings.mode, plan.ink, plan.travel, plan.seconds)
+        self._started = self._last_progress = time.monotonic()
+        self.trace(plan, must_clear)
         rospy.loginfo('Done drawing %r; the turtle is at %s', text,
                       _pose_text(self.driver.latest_pose))
 

@@ -3,14 +3,25 @@
 LetterDrawer turns text into the calls the lab's class makes: in timed mode
 rotate(degrees) and move(meters), so the lab's N is literally rotate(90),
 move(3.0), rotate(225), move(3.5), rotate(135), move(3.0); in feedback mode
-steer(primitive), which closes the loop on the pose; pen(down) to lift the pen
-for travel; clear() when the canvas is full. A subclass supplies those calls:
+steer(primitive), which closes the loop on the pose; in smooth mode
+glide(points), which traces a whole stroke without stopping; pen(down) to
+lift the pen for travel; clear() when the canvas is full. A subclass supplies those calls:
 TurtleController with ROS, a recorder in the unit tests.
 """
 import math
+from typing import List, NamedTuple
 
-from .plan import Layout, Pen, PlannedPose, Turn, plan_strokes, word_strokes
-from .route import order_strokes
+from .plan import Layout, Line, Pen, PlannedPose, Turn, plan_strokes, word_strokes
+from .route import ink_length, order_strokes, travel_length
+
+
+class Plan(NamedTuple):
+    start: tuple            # where the turtle is when it begins
+    strokes: List[list]     # in the order and direction they are drawn, meters
+    primitives: list        # what timed and feedback modes carry out
+    ink: float              # m drawn
+    travel: float           # m with the pen up
+    seconds: float          # how long it should take
 
 
 class LetterDrawer:
@@ -29,21 +40,48 @@ class LetterDrawer:
             self._layout = Layout((where.x, where.y), self.settings.size, self.settings.font)
         return self._layout.reserve(text)
 
-    def plan(self, text, places, start: PlannedPose):
+    def plan(self, text, places, start: PlannedPose) -> Plan:
         """The strokes of `text` at `places`, in the order that travels least
         with the pen up, and the primitives that draw them from `start`."""
         s = self.settings
-        strokes = order_strokes(word_strokes(text, places, s.size, s.font), (start.x, start.y))
+        here = (start.x, start.y)
+        strokes = order_strokes(word_strokes(text, places, s.size, s.font), here)
         primitives, _ = plan_strokes(strokes, start, s.turn_direction)
-        return strokes, primitives
+        ink, travel = ink_length(strokes), travel_length(strokes, here)
+        if s.mode == 'smooth':
+            seconds = (ink + travel) / s.linear_speed
+        else:
+            seconds = sum(abs(p.angle) / s.angular_speed if isinstance(p, Turn)
+                          else p.length / s.linear_speed
+                          for p in primitives if not isinstance(p, Pen))
+        return Plan(here, strokes, primitives, ink, travel, seconds)
 
-    def trace(self, text, places, must_clear, start: PlannedPose):
-        """Draw `text` at `places` (from reserve), from the turtle's `start`."""
+    def trace(self, plan: Plan, must_clear: bool):
+        """Carry out a plan; progress(ink drawn, ink in all) after each part."""
         if must_clear:
             self.clear()
         self.pen(True)
-        for primitive in self.plan(text, places, start)[1]:
+        drawn = 0.0
+        if self.settings.mode == 'smooth':
+            here = plan.start
+            for stroke in plan.strokes:
+                if math.hypot(stroke[0][0] - here[0], stroke[0][1] - here[1]) > 1e-9:
+                    self.pen(False)
+                    self.glide(stroke[:1])
+                    self.pen(True)
+                self.glide(stroke[1:])
+                here = stroke[-1]
+                drawn += ink_length([stroke])
+                self.progress(drawn, plan.ink)
+            return
+        pen_down = True
+        for primitive in plan.primitives:
             self._carry_out(primitive)
+            if isinstance(primitive, Pen):
+                pen_down = primitive.down
+            elif isinstance(primitive, Line) and pen_down:
+                drawn += primitive.length
+                self.progress(drawn, plan.ink)
 
     def _carry_out(self, primitive):
         if isinstance(primitive, Pen):
@@ -64,6 +102,12 @@ class LetterDrawer:
 
     def steer(self, primitive):
         raise NotImplementedError
+
+    def glide(self, points):
+        raise NotImplementedError
+
+    def progress(self, ink_drawn, ink):
+        pass
 
     def pen(self, down):
         raise NotImplementedError

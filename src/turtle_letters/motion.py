@@ -121,5 +121,47 @@ class FeedbackExecutor:
         return Command(vx * scale, vy * scale, angular)
 
 
+class SmoothExecutor:
+    """Trace a polyline at the linear speed, without stopping at its vertices.
+
+    Turtlesim turns first and then moves along the NEW heading, with
+    linear.x ahead and linear.y to the left, so a command can move the turtle
+    by any displacement in one tick while it turns to any heading: the turtle
+    faces along the edge it draws, as a pen would. Each tick's move is a
+    straight line, so a tick that would pass a vertex is cut short to land on
+    it exactly: every move lies on one edge, and the drawn line is the stroke.
+    Closed loop: every move is worked out from the pose just read, and a
+    vertex counts as reached only when a pose shows the turtle on it.
+    """
+
+    def __init__(self, points, linear_speed: float, angular_speed: float = 0.0) -> None:
+        self.points = list(points)
+        self.step = linear_speed * SIM_TICK
+        self.next = 0           # index of the vertex to reach next
+
+    def start(self, pose) -> Optional[Command]:
+        return self.update(pose)
+
+    def update(self, pose) -> Optional[Command]:
+        x, y = pose.x, pose.y
+        while self.next < len(self.points) and math.hypot(
+                self.points[self.next][0] - x, self.points[self.next][1] - y) < POSITION_TOLERANCE:
+            self.next += 1
+        if self.next == len(self.points):
+            return None
+        vx, vy = self.points[self.next]
+        dx, dy = vx - x, vy - y
+        distance = math.hypot(dx, dy)
+        if distance > self.step:                    # not this tick: go on along the edge
+            dx, dy = dx * self.step / distance, dy * self.step / distance
+        heading = math.atan2(vy - y, vx - x)
+        angular = wrap(heading - pose.theta) / SIM_TICK
+        new_theta = pose.theta + angular * SIM_TICK   # the heading turtlesim moves along
+        cos_t, sin_t = math.cos(new_theta), math.sin(new_theta)
+        return Command((cos_t * dx + sin_t * dy) / SIM_TICK, (-sin_t * dx + cos_t * dy) / SIM_TICK,
+                       angular)
+
+
 EXECUTORS = {'timed': TimedExecutor, 'feedback': FeedbackExecutor}
+MODES = ('timed', 'feedback', 'smooth')
 CLOCKS = ('sim', 'wall')

@@ -9,7 +9,7 @@ import yaml
 
 from .font import BUILTIN
 from .hershey import FontError, load_font
-from .motion import CLOCKS, EXECUTORS
+from .motion import CLOCKS, MODES
 from .plan import TURN_DIRECTIONS, largest_size
 
 
@@ -116,8 +116,8 @@ PARAMETERS = (
     Parameter('letter', 'str', 'N', '', 'what a trigger draws: A-Z or 0-9', _letter),
     Parameter('size', 'float', '3.0', 'm', "letter height (the lab's N: 3.0)", _size),
     Parameter('mode', 'str', 'timed', '',
-              "timed (the lab's open-loop primitives) or feedback (closed loop on the pose)",
-              _one_of(*EXECUTORS)),
+              "timed (the lab's open-loop primitives), feedback (closed loop on the pose) or "
+              "smooth (closed loop, each stroke traced without stopping)", _one_of(*MODES)),
     Parameter('clock', 'str', 'sim', '',
               "timed mode's clock: sim (the simulator's ticks: exact) or wall (the lab's "
               "rospy.Time.now(): short when the machine is busy)", _one_of(*CLOCKS)),

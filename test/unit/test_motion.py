@@ -158,3 +158,44 @@ def test_the_sim_clock_drives_the_exact_distance():
     turtle = Turtle('t', 1.0, 1.0, 0.0)
     run([Line(3.0, 0, 0, 0)], 'timed', turtle)
     assert turtle.x - 1.0 == pytest.approx(3.0, abs=1e-6)
+
+
+def trace_smoothly(points, turtle, speed=1.0):
+    """The smooth executor against the simulator's step; every tick's position."""
+    from turtle_letters.motion import SmoothExecutor
+    executor = SmoothExecutor(points, speed)
+    command = executor.start(sample(turtle))
+    track = [(turtle.x, turtle.y)]
+    tick = 0
+    while command is not None:
+        tick += 1
+        turtle.command(*command, now=tick)
+        turtle.step(now=tick)
+        track.append((turtle.x, turtle.y))
+        command = executor.update(sample(turtle))
+        assert tick < 100000, 'the stroke never ended'
+    return track, tick
+
+
+def test_smooth_traces_the_labs_n_on_its_strokes_in_ink_length_over_speed():
+    from support.accuracy import distance_to_polyline, vertex_errors
+    stroke = [(CENTRE + 3 * x, CENTRE + 3 * y) for x, y in LAB_N.strokes[0]]
+    turtle = Turtle('t', CENTRE, CENTRE, 0.0)
+    track, ticks = trace_smoothly(stroke, turtle)
+    assert max(distance_to_polyline(p, stroke) for p in track) < 1e-5
+    assert max(vertex_errors(track, stroke)) < 1e-5
+    # 9.5 m at 1 m/s is 593.75 ticks; a tick cut short at each of 3 corners, and the end
+    assert ticks <= 594 + 4
+    # every tick moves at most the speed's worth: it never overshoots a vertex
+    assert all(math.hypot(b[0] - a[0], b[1] - a[1]) <= 0.016 + 1e-6 for a, b in zip(track, track[1:]))
+
+
+def test_smooth_faces_along_the_edge_it_draws():
+    from turtle_letters.motion import SmoothExecutor
+    turtle = Turtle('t', 2.0, 2.0, 0.0)
+    executor = SmoothExecutor([(2.0, 4.0), (4.0, 4.0)], 1.0)
+    command = executor.start(sample(turtle))
+    turtle.command(*command, now=1)
+    turtle.step(now=1)
+    assert turtle.theta == pytest.approx(math.pi / 2)
+    assert (turtle.x, turtle.y) == pytest.approx((2.0, 2.016))
