@@ -38,8 +38,13 @@ class Faults(unittest.TestCase):
         cls.chatter = rospy.Publisher('/chatter', String, queue_size=2000)
 
     def setUp(self):
+        self.forget_parameters()
+        self.logs.messages.clear()              # each test counts its own lines
+
+    @staticmethod
+    def forget_parameters():
         if rospy.has_param(CONTROLLER):
-            rospy.delete_param(CONTROLLER)      # an earlier test's _name:=value
+            rospy.delete_param(CONTROLLER)      # an earlier run's _name:=value
 
     def start(self, process):
         self.addCleanup(process.stop)
@@ -183,7 +188,6 @@ class Faults(unittest.TestCase):
         self.check_stops_at_once(signal.SIGINT)
 
     def test_6_a_bad_parameter_stops_roslaunch_with_one_fatal_line(self):
-        self.logs.messages.clear()      # count only what this test's launches log
         cases = {'letter:=%': "~letter is '%'", 'size:=0': '~size is 0',
                  'size:=50': '~size is 50', 'mode:=fast': "~mode is 'fast'",
                  "text:=IT'S": '~text is "IT\'S"', 'text:=SAY "HI"': '~text is \'SAY "HI"\'',
@@ -204,6 +208,7 @@ class Faults(unittest.TestCase):
     def test_7_a_value_ros_cannot_store_is_refused_with_one_fatal_line(self):
         for argument, expected in {'_letter:=?': "~letter is '?'",
                                    '_size:=~': "~size is '~'"}.items():
+            self.forget_parameters()
             run = subprocess.run(['rosrun', 'turtle_letters', 'turtle_controller.py', argument],
                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                  universal_newlines=True, timeout=60)
@@ -219,7 +224,6 @@ class Faults(unittest.TestCase):
         self.start(controller())
         self.wait_for_node(CONTROLLER)
         self.wait_for_chatter_subscriber()
-        self.logs.messages.clear()
         rate = rospy.Rate(10)           # rospy_tutorials' talker: "hello world" at 10 Hz
         for _ in range(50):
             self.chatter.publish(String(f'hello world {rospy.get_time()}'))

@@ -137,9 +137,10 @@ class Layout:
                  font: Font = BUILTIN) -> None:
         self.size = size
         self.font = font
+        self.left = MARGIN + font.overhang * size     # where a new line starts
         if not self.fits_at(*first_place, font.widest):
             # The turtle starts too near a wall for this size: begin top left.
-            first_place = (MARGIN, WORLD_SIZE - MARGIN - font.ascent * size)
+            first_place = (self.left, WORLD_SIZE - MARGIN - font.ascent * size)
         self.first_place = first_place
         self.cursor = first_place
 
@@ -156,7 +157,7 @@ class Layout:
         placed = []
         for width in widths:
             if not self.fits_at(x, y, width):
-                x, y = MARGIN, y - self.font.line_height * self.size
+                x, y = self.left, y - self.font.line_height * self.size
                 if not self.fits_at(x, y, width):
                     return None, cursor
             placed.append((x, y))

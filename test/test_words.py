@@ -1,6 +1,9 @@
 #!/usr/bin/python3
-"""Feedback mode: a word from the controller's ~text topic, drawn to the
-millimetre, the pen lifted between strokes, nothing drawn while travelling."""
+"""A word from the controller's ~text topic, drawn to the millimetre in a
+closed-loop mode (feedback or smooth), in any font: the path on the strokes
+and the pen-up travel moves, every vertex reached, the ink in the pen's
+colour and none on the travel moves. Configured by the <test>'s parameters:
+~text, ~size, ~pen, and ~font, ~turn_direction as given to the launch file."""
 import math
 import os
 import tempfile
@@ -16,6 +19,7 @@ from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
 from support.accuracy import distance_to_polyline, touches_a_wall, vertex_errors
+from turtle_letters.hershey import load_font
 from turtle_letters.plan import Layout, Line, Pen, PlannedPose, plan_strokes, word_strokes
 from turtle_letters.route import order_strokes
 
@@ -23,10 +27,10 @@ VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
 BACKGROUND = (69, 86, 255)
 
 
-def expected(text, start, size, direction):
+def expected(text, start, size, font, direction):
     """Strokes and pen-up travel segments, by the package's own plan."""
-    places, _ = Layout((start.x, start.y), size).reserve(text)
-    strokes = order_strokes(word_strokes(text, places, size), (start.x, start.y))
+    places, _ = Layout((start.x, start.y), size, font).reserve(text)
+    strokes = order_strokes(word_strokes(text, places, size, font), (start.x, start.y))
     primitives, _ = plan_strokes(strokes, start, direction)
     travel = []
     pen_down, here = True, (start.x, start.y)
@@ -45,14 +49,16 @@ def pixel(image, x, y):
     return (c.red(), c.green(), c.blue())
 
 
-class FeedbackLetters(unittest.TestCase):
+class Words(unittest.TestCase):
     """One word drawn once (in setUpClass); each test checks one thing of it."""
 
     @classmethod
     def setUpClass(cls):
-        rospy.init_node('feedback_letters_test')
+        rospy.init_node('words_test')
         text = rospy.get_param('~text')
         size = rospy.get_param('~size')
+        font = load_font(rospy.get_param('~font', 'builtin'))
+        direction = rospy.get_param('~turn_direction', 'shortest')
         cls.pen = tuple(int(c) for c in rospy.get_param('~pen').split()[:3])
         poses, lock = [], threading.Lock()
 
@@ -65,7 +71,7 @@ class FeedbackLetters(unittest.TestCase):
         pub.publish(String(text))
 
         cls.strokes, cls.travel = expected(text, PlannedPose(first.x, first.y, first.theta), size,
-                                           'shortest')
+                                           font, direction)
         last = cls.strokes[-1][-1]
         deadline = time.time() + 400
         while time.time() < deadline:
@@ -110,4 +116,4 @@ class FeedbackLetters(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('turtle_letters', 'feedback_letters', FeedbackLetters)
+    rostest.rosrun('turtle_letters', 'words', Words)
