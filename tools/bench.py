@@ -31,25 +31,32 @@ from std_srvs.srv import Empty  # noqa: E402
 from turtlesim.msg import Pose as PoseMsg  # noqa: E402
 from turtlesim.srv import Spawn  # noqa: E402
 
-from turtle_letters.plan import Layout, PlannedPose, glyph_for, glyph_strokes  # noqa: E402
+from turtle_letters.plan import (Layout, PlannedPose, glyph_for, glyph_strokes,  # noqa: E402
+                                 word_strokes)
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'test'))
 from support.accuracy import distance_to_polyline, vertex_errors  # noqa: E402
-from support.nodes import PoseRecorder, wait_until  # noqa: E402
+from support.nodes import PoseRecorder, subscribed, wait_until  # noqa: E402
 from support.procstat import cpu_seconds, rss_mb  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
     'vertex_max_mm': {('timed', 'idle'): 8.0, ('timed', 'loaded'): 10.0,
-                      ('feedback', 'idle'): 1.0, ('feedback', 'loaded'): 1.0},
+                      ('feedback', 'idle'): 1.0, ('feedback', 'loaded'): 1.0,
+                      ('smooth', 'idle'): 1.0, ('smooth', 'loaded'): 1.0},
+    'path_max_mm': {('smooth', 'idle'): 1.0, ('smooth', 'loaded'): 1.0},
+    'drawing_s': {('smooth', 'idle'): 10.5, ('smooth', 'loaded'): 10.5},
     'controller_cpu_pct': 3.0,
     'cmd_vel_per_s': 100.0,
     'latency_ms': 10.0,
 }
+CONTROLLER = '/turtlebot_controller'
 LAB_DRAWING_S = 40.9
 SIM_RATE_HZ = 62.5
 # What each mode of the bench asks the controller for.
 MODES = {'timed': ('_mode:=timed', '_clock:=sim'), 'timed-wall': ('_mode:=timed', '_clock:=wall'),
-         'feedback': ('_mode:=feedback',)}
+         'feedback': ('_mode:=feedback',), 'smooth': ('_mode:=smooth',)}
+WORD = 'Hello, World!'
+WORD_FONTS = ('futural', 'scripts')
 
 
 
@@ -96,12 +103,6 @@ class Load:
             self.processes.stop(child, signal.SIGTERM)
 
 
-def controller_ready(processes):
-    """The controller says Ready once its subscriptions are made."""
-    with open(os.path.join(processes.log_dir, 'controller.log')) as f:
-        return 'Ready' in f.read()
-
-
 def ideal_strokes(letter, size):
     start = PlannedPose(5.544445, 5.544445, 0.0)
     place = Layout((start.x, start.y), size).reserve(letter)[0][0]
@@ -115,7 +116,8 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
         *MODES[mode], f'_letter:={args.letter}', f'_size:={args.size}')
     try:
         wait_until(lambda: chatter.get_num_connections() > 0, 30, 'the controller on /chatter')
-        wait_until(lambda: controller_ready(processes), 30, "the controller's Ready line")
+        wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 30,
+                   "the controller's pose subscription")
         recorder.reset()
         sim_cpu0 = cpu_seconds(sim_pid)
         ctl_cpu0 = cpu_seconds(controller.pid)
@@ -158,6 +160,59 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
         'sim_rate_hz': (len(during) - 1) / (during[-1][0] - during[0][0]),
         'sim_cpu_pct': 100 * sim_cpu / span,
         'path': path,
+    }
+
+
+def word_run(processes, recorder, font, size=1.0, speed=1.0):
+    """WORD in a Hershey font, smooth mode, from the ~text topic."""
+    from turtle_letters.drawing import LetterDrawer
+    from turtle_letters.route import travel_length
+    from turtle_letters.settings import Settings
+    rospy.ServiceProxy('/reset', Empty)()
+    controller = processes.start(
+        'controller', 'rosrun', 'turtle_letters', 'turtle_controller.py', '_mode:=smooth',
+        f'_font:={font}', f'_size:={size}', f'_linear_speed:={speed}')
+    text = rospy.Publisher(CONTROLLER + '/text', String, queue_size=1)
+    try:
+        wait_until(lambda: text.get_num_connections() > 0, 30, 'the controller on ~text')
+        wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 30,
+                   "the controller's pose subscription")
+        recorder.reset()
+        text.publish(String(WORD))
+
+        def finished():
+            with recorder.lock:
+                moving = [t for t, m in recorder.commands if m]
+            return moving and time.time() - moving[-1] > 1.5
+        wait_until(finished, 600, 'the word to be drawn')
+        with recorder.lock:
+            commands = list(recorder.commands)
+            poses = [p for _, p in recorder.poses]
+    finally:
+        text.unregister()
+        processes.stop(controller)
+    drawer = LetterDrawer(Settings(lambda name, default: {
+        '~font': font, '~size': size, '~mode': 'smooth', '~linear_speed': speed}.get(name, default)))
+    start = PlannedPose(5.544445, 5.544445, 0.0)
+    places = drawer.reserve(WORD, start)[0]
+    plan = drawer.plan(WORD, places, start)
+    travel_moves, here = [], plan.start
+    for stroke in plan.strokes:
+        travel_moves.append([here, stroke[0]])
+        here = stroke[-1]
+    allowed = plan.strokes + travel_moves
+    path = [(p.x, p.y) for p in poses]
+    moving = [t for t, m in commands if m]
+    drawing = max(moving) - min(moving)
+    reading = word_strokes(WORD, places, size, drawer.settings.font)
+    return {
+        'font': font, 'drawing_s': drawing, 'ideal_s': (plan.ink + plan.travel) / speed,
+        'path_max_mm': max(min(distance_to_polyline(q, s) if len(s) > 1 else
+                               math.hypot(q[0] - s[0][0], q[1] - s[0][1]) for s in allowed)
+                           for q in path) * 1000,
+        'vertex_max_mm': max(vertex_errors(path, [v for s in plan.strokes for v in s])) * 1000,
+        'ink_m': plan.ink, 'travel_m': plan.travel,
+        'reading_travel_m': travel_length(reading, plan.start),
     }
 
 
@@ -210,6 +265,21 @@ def limit_for(key, mode, load):
     return target.get((mode, load)) if isinstance(target, dict) else target
 
 
+def word_lines(results):
+    """Smooth mode on a real word: time against (ink + travel) / speed, accuracy, travel."""
+    lines = []
+    for w in results.get('words', []):
+        late = w['drawing_s'] / w['ideal_s'] - 1
+        lines.append(
+            f"{WORD!r} in {w['font']:8} {w['load']:7} smooth: "
+            f"{w['drawing_s']:.1f} s{'!' if late > 0.10 else ''} against {w['ideal_s']:.1f} s "
+            f"(ink + travel at speed, {100 * late:+.0f}%); worst pose "
+            f"{w['path_max_mm']:.2f}{'!' if w['path_max_mm'] > 1 else ''} mm, worst vertex "
+            f"{w['vertex_max_mm']:.2f}{'!' if w['vertex_max_mm'] > 1 else ''} mm; travel "
+            f"{w['travel_m']:.1f} m, {w['reading_travel_m']:.1f} m in reading order")
+    return [''] + lines if lines else []
+
+
 def clock_ratios(results):
     """The lab's wall clock against the simulator's, worst vertex, per load."""
     worst = {(g['mode'], g['load']): g['summary']['vertex_max_mm']['worst']
@@ -251,6 +321,7 @@ def table(results, sim):
             label = f'{mode:11}{load:8}' if stat == 'median' else f"{'  worst':19}"
             lines.append(label + ''.join(cells))
     lines.extend(clock_ratios(results))
+    lines.extend(word_lines(results))
     sim_f = results['simulator_figures']
     idle, ten = sim_f['idle'], sim_f['ten_moving']
 
@@ -267,9 +338,10 @@ def table(results, sim):
     lines.append('Each group: median row, then worst over the repetitions. "!" marks a figure '
                  'outside its target.')
     lines.append('timed-wall is the lab\'s own timing, shown for comparison: it has no targets.')
-    lines.append('Targets: vertex <= 8 mm timed idle, <= 10 mm timed loaded, <= 1 mm feedback; '
-                 'drawing 40.9 s timed idle; latency <= 10 ms; controller CPU <= 3%; '
-                 'cmd_vel <= 100/s; simulator 62.5 Hz +-1% and <= 3% CPU idle, <= 10% CPU with ten '
+    lines.append('Targets: vertex <= 8 mm timed idle, <= 10 mm timed loaded, <= 1 mm feedback '
+                 'and smooth; path <= 1 mm smooth; drawing 40.9 s timed idle, <= 10.5 s smooth; '
+                 'a word in smooth mode within 10% of (ink + travel) / speed; latency <= 10 ms; '
+                 'controller CPU <= 3%; cmd_vel <= 100/s; simulator 62.5 Hz +-1% and <= 3% CPU idle, <= 10% CPU with ten '
                  'moving turtles, <= 80 MB.')
     return '\n'.join(lines)
 
@@ -279,7 +351,9 @@ def main():
     parser.add_argument('--reps', type=int, default=3)
     parser.add_argument('--letter', default='N')
     parser.add_argument('--size', type=float, default=3.0)
-    parser.add_argument('--modes', default='timed,timed-wall,feedback')
+    parser.add_argument('--modes', default='timed,timed-wall,feedback,smooth')
+    parser.add_argument('--words', default=','.join(WORD_FONTS),
+                        help=f'fonts to draw {WORD!r} in, smooth mode ("" for none)')
     parser.add_argument('--loads', default='idle,loaded')
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
@@ -314,6 +388,10 @@ def main():
                     runs.append(one_run(args, processes, recorder, chatter, sim.pid, mode))
                 results['groups'].append({'mode': mode, 'load': load, 'runs': runs,
                                           'summary': summarise(runs)})
+            for font in filter(None, args.words.split(',')):
+                print(f'bench: {WORD!r} in {font}, smooth, {load}...', flush=True)
+                results.setdefault('words', []).append(
+                    dict(word_run(processes, recorder, font), load=load))
             for load_process in loads:
                 load_process.stop()
             loads = []

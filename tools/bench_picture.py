@@ -8,7 +8,8 @@ from PyQt5.QtWidgets import QApplication  # noqa: E402
 
 COLOURS = {('timed', 'idle'): QColor(33, 102, 172), ('timed', 'loaded'): QColor(103, 169, 207),
            ('timed-wall', 'idle'): QColor(27, 120, 55), ('timed-wall', 'loaded'): QColor(127, 191, 123),
-           ('feedback', 'idle'): QColor(178, 24, 43), ('feedback', 'loaded'): QColor(239, 138, 98)}
+           ('feedback', 'idle'): QColor(178, 24, 43), ('feedback', 'loaded'): QColor(239, 138, 98),
+           ('smooth', 'idle'): QColor(118, 42, 131), ('smooth', 'loaded'): QColor(194, 165, 207)}
 MAIN_SCALE = 90.0          # px per m in the overview
 INSET_SCALE = 12000.0      # px per m in the corner boxes (12 px per mm)
 INSET_SIZE = 240           # px: a box shows +-10 mm around a vertex
