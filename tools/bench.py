@@ -123,12 +123,7 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
         ctl_cpu0 = cpu_seconds(controller.pid)
         t_trigger = time.time()
         chatter.publish(String('P'))
-
-        def finished():
-            with recorder.lock:
-                moving = [t for t, m in recorder.commands if m]
-            return moving and time.time() - moving[-1] > 1.5
-        wait_until(finished, 300, 'the drawing to end')
+        recorder.wait_until_commands_end(300, 'the drawing to end')
         with recorder.lock:
             commands = list(recorder.commands)
             poses = list(recorder.poses)
@@ -179,12 +174,7 @@ def word_run(processes, recorder, font, size=1.0, speed=1.0):
                    "the controller's pose subscription")
         recorder.reset()
         text.publish(String(WORD))
-
-        def finished():
-            with recorder.lock:
-                moving = [t for t, m in recorder.commands if m]
-            return moving and time.time() - moving[-1] > 1.5
-        wait_until(finished, 600, 'the word to be drawn')
+        recorder.wait_until_commands_end(600, 'the word to be drawn')
         with recorder.lock:
             commands = list(recorder.commands)
             poses = [p for _, p in recorder.poses]

@@ -150,6 +150,14 @@ class PoseRecorder:
     def moving_since(self, t0):
         return [m for m in self.since(t0) if m.linear_velocity or m.angular_velocity]
 
+    def wait_until_commands_end(self, timeout, what, quiet_for=1.5):
+        """A moving cmd_vel, then `quiet_for` s without one (with_commands)."""
+        def ended():
+            with self.lock:
+                moving = [t for t, m in self.commands if m]
+            return moving and time.time() - moving[-1] > quiet_for
+        wait_until(ended, timeout, what)
+
     def wait_until_still(self, t0, timeout, still_for=1.5):
         """Motion after t0, then `still_for` s without any; fails otherwise."""
         def still():
