@@ -19,6 +19,7 @@ from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
 from support.accuracy import distance_to_polyline, touches_a_wall, vertex_errors
+from turtle_letters.font import BUILTIN
 from turtle_letters.hershey import load_font
 from turtle_letters.plan import Layout, Line, Pen, PlannedPose, plan_strokes, word_strokes
 from turtle_letters.route import order_strokes
@@ -30,7 +31,9 @@ BACKGROUND = (69, 86, 255)
 def expected(text, start, size, font, direction):
     """Strokes and pen-up travel segments, by the package's own plan."""
     places, _ = Layout((start.x, start.y), size, font).reserve(text)
-    strokes = order_strokes(word_strokes(text, places, size, font), (start.x, start.y))
+    strokes = word_strokes(text, places, size, font)
+    if font is not BUILTIN:
+        strokes = order_strokes(strokes, (start.x, start.y))
     primitives, _ = plan_strokes(strokes, start, direction)
     travel = []
     pen_down, here = True, (start.x, start.y)

@@ -11,6 +11,7 @@ TurtleController with ROS, a recorder in the unit tests.
 import math
 from typing import List, NamedTuple
 
+from .font import BUILTIN
 from .plan import Layout, Line, Pen, PlannedPose, Turn, plan_strokes, word_strokes
 from .route import ink_length, order_strokes, travel_length
 
@@ -41,11 +42,15 @@ class LetterDrawer:
         return self._layout.reserve(text)
 
     def plan(self, text, places, start: PlannedPose) -> Plan:
-        """The strokes of `text` at `places`, in the order that travels least
-        with the pen up, and the primitives that draw them from `start`."""
+        """The strokes of `text` at `places` and the primitives that draw them
+        from `start`. A Hershey font's strokes go in the order and direction
+        that travels least with the pen up; the builtin font's keep the order
+        and direction they are drawn in (so every N is the lab's N)."""
         s = self.settings
         here = (start.x, start.y)
-        strokes = order_strokes(word_strokes(text, places, s.size, s.font), here)
+        strokes = word_strokes(text, places, s.size, s.font)
+        if s.font is not BUILTIN:       # the builtin font keeps the lab's order and direction
+            strokes = order_strokes(strokes, here)
         primitives, _ = plan_strokes(strokes, start, s.turn_direction)
         ink, travel = ink_length(strokes), travel_length(strokes, here)
         if s.mode == 'smooth':

@@ -56,9 +56,8 @@ def test_feedback_mode_steers_the_same_primitives():
 def test_travel_to_a_stroke_lifts_the_pen():
     calls = Recorder(size=1.0).draw('K')
     pens = [c for c in calls if c[0] == 'pen']
-    # K's three strokes: the turtle starts at the bottom-left corner, on the
-    # end of the upright, which it draws from there; then two travels
-    assert pens == [('pen', True)] + [('pen', False), ('pen', True)] * 2
+    # K's three strokes each start away from where the turtle is
+    assert pens == [('pen', True)] + [('pen', False), ('pen', True)] * 3
 
 
 def test_a_full_canvas_is_cleared_and_drawing_starts_again_at_the_first_place():
@@ -85,10 +84,9 @@ def test_a_word_that_does_not_fit_is_refused_and_reserves_nothing():
 def test_smooth_mode_glides_through_each_stroke_lifting_the_pen_between():
     assert Recorder(mode='smooth').draw('N') == [('pen', True), ('glide', 3)]
     calls = Recorder(mode='smooth', size=1.0).draw('K')
-    # as in timed mode: the upright from where the turtle is, two travels
-    assert calls == [('pen', True), ('glide', 1),
-                     ('pen', False), ('glide', 1), ('pen', True), ('glide', 1),
-                     ('pen', False), ('glide', 1), ('pen', True), ('glide', 1)]
+    # as in timed mode: three travels, each to a stroke of one edge
+    assert calls == [('pen', True)] + [('pen', False), ('glide', 1), ('pen', True),
+                                       ('glide', 1)] * 3
 
 
 def test_the_plan_says_ink_travel_and_time():
@@ -98,3 +96,14 @@ def test_the_plan_says_ink_travel_and_time():
     assert (plan.ink, plan.travel) == (pytest.approx(9.5), 0.0)
     # the lab's 40.9 s: 9.5 m at 1 m/s, and 450 degrees at 0.25 rad/s
     assert plan.seconds == pytest.approx(9.5 + 2.5 * math.pi / 0.25)
+
+
+def test_a_hershey_word_is_drawn_in_the_shorter_order():
+    from turtle_letters.route import travel_length
+    drawer = Recorder(font='futural', size=1.0)
+    where = PlannedPose(CENTRE, CENTRE, 0.0)
+    places = drawer.reserve('Hi!', where)[0]
+    plan = drawer.plan('Hi!', places, where)
+    from turtle_letters.plan import word_strokes
+    reading = word_strokes('Hi!', places, 1.0, drawer.settings.font)
+    assert plan.travel < travel_length(reading, plan.start)
