@@ -7,8 +7,6 @@ colour and none on the travel moves. Configured by the <test>'s parameters:
 import math
 import os
 import tempfile
-import threading
-import time
 import unittest
 
 import rospy
@@ -19,6 +17,7 @@ from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
 from support.accuracy import distance_to_polyline, touches_a_wall, vertex_errors
+from support.nodes import LogWatch, PoseRecorder, wait_until
 from turtle_letters.font import BUILTIN
 from turtle_letters.hershey import load_font
 from turtle_letters.plan import Layout, Line, Pen, PlannedPose, plan_strokes, word_strokes
@@ -63,28 +62,26 @@ class Words(unittest.TestCase):
         font = load_font(rospy.get_param('~font', 'builtin'))
         direction = rospy.get_param('~turn_direction', 'shortest')
         cls.pen = tuple(int(c) for c in rospy.get_param('~pen').split()[:3])
-        poses, lock = [], threading.Lock()
-
-        def on_pose(msg):
-            with lock:
-                poses.append(msg)
+        logs = LogWatch()
         first = rospy.wait_for_message('/turtle1/pose', PoseMsg, timeout=30)
-        rospy.Subscriber('/turtle1/pose', PoseMsg, on_pose, queue_size=1000)
+        poses = PoseRecorder()
+        poses.wait_connected()
         pub = rospy.Publisher('/turtlebot_controller/text', String, queue_size=1, latch=True)
         pub.publish(String(text))
 
         cls.strokes, cls.travel = expected(text, PlannedPose(first.x, first.y, first.theta), size,
                                            font, direction)
         last = cls.strokes[-1][-1]
-        deadline = time.time() + 400
-        while time.time() < deadline:
-            with lock:
-                p = poses[-1] if poses else first
-            if math.hypot(p.x - last[0], p.y - last[1]) < 1e-3 and p.linear_velocity == 0:
-                break
-            time.sleep(0.2)
-        with lock:
-            cls.path = [(p.x, p.y) for p in poses]
+
+        def done():
+            if logs.count('Refused', '/turtlebot_controller'):
+                raise AssertionError(f'the controller refused {text!r}')
+            if not poses.since(0):
+                return False
+            p = poses.last()
+            return math.hypot(p.x - last[0], p.y - last[1]) < 1e-3 and p.linear_velocity == 0
+        wait_until(done, 250, 'the turtle at the end of the last stroke')
+        cls.path = poses.path()
 
     def test_every_vertex_is_reached(self):
         vertices = [v for stroke in self.strokes for v in stroke]
