@@ -71,22 +71,20 @@ class Words(unittest.TestCase):
 
         cls.strokes, cls.travel = expected(text, PlannedPose(first.x, first.y, first.theta), size,
                                            font, direction)
-        last = cls.strokes[-1][-1]
 
         def done():
             if logs.count('Refused', '/turtlebot_controller'):
                 raise AssertionError(f'the controller refused {text!r}')
-            if not poses.since(0):
-                return False
-            p = poses.last()
-            return math.hypot(p.x - last[0], p.y - last[1]) < 1e-3 and p.linear_velocity == 0
-        wait_until(done, 250, 'the turtle at the end of the last stroke')
+            return logs.count('Done drawing', '/turtlebot_controller')
+        wait_until(done, 250, "the controller's Done line")
+        poses.wait_until_still(0, 10, still_for=0.5)
         cls.path = poses.path()
 
     def test_every_vertex_is_reached(self):
         vertices = [v for stroke in self.strokes for v in stroke]
         errors = vertex_errors(self.path, vertices)
-        self.assertLess(max(errors), VERTEX_TOLERANCE, f'worst vertex {max(errors) * 1000:.2f} mm')
+        missed = [(v, round(e * 1000, 2)) for v, e in zip(vertices, errors) if e >= VERTEX_TOLERANCE]
+        self.assertEqual(missed, [], 'vertices missed (m) by mm')
 
     def test_the_path_keeps_to_the_strokes_and_travel_moves(self):
         allowed = self.strokes + self.travel
@@ -104,6 +102,7 @@ class Words(unittest.TestCase):
         rospy.set_param('/turtlesim/canvas_png', path_png)
         self.assertTrue(rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)().success)
         image = QImage(path_png)
+        turtle = self.path[-1]          # its icon covers the ink under it
         for a, b in self.travel:
             for i in range(1, 20):
                 q = (a[0] + (b[0] - a[0]) * i / 20, a[1] + (b[1] - a[1]) * i / 20)
@@ -112,6 +111,8 @@ class Words(unittest.TestCase):
         for stroke in self.strokes:
             for a, b in zip(stroke, stroke[1:]):
                 mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+                if math.hypot(mid[0] - turtle[0], mid[1] - turtle[1]) < 0.5:
+                    continue
                 self.assertEqual(pixel(image, *mid), self.pen, f'no stroke in the pen colour at {mid}')
 
 
