@@ -28,7 +28,6 @@ import rospy  # noqa: E402  (after the master URI is chosen)
 from geometry_msgs.msg import Twist  # noqa: E402
 from std_msgs.msg import String  # noqa: E402
 from std_srvs.srv import Empty  # noqa: E402
-from turtlesim.msg import Pose as PoseMsg  # noqa: E402
 from turtlesim.srv import Spawn  # noqa: E402
 
 from turtle_letters.plan import (Layout, PlannedPose, glyph_for, glyph_strokes,  # noqa: E402
