@@ -17,7 +17,6 @@ import os
 import platform
 import signal
 import statistics
-import subprocess
 import sys
 import time
 
@@ -35,7 +34,7 @@ from turtle_letters.plan import (Layout, PlannedPose, glyph_for, glyph_strokes, 
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'test'))
 from support.accuracy import distance_to_polyline, vertex_errors  # noqa: E402
-from support.nodes import PoseRecorder, subscribed, wait_until  # noqa: E402
+from support.nodes import Processes, PoseRecorder, subscribed, wait_until  # noqa: E402
 from support.procstat import cpu_seconds, rss_mb  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
@@ -57,36 +56,6 @@ MODES = {'timed': ('_mode:=timed', '_clock:=sim'), 'timed-wall': ('_mode:=timed'
 WORD = 'Hello, World!'
 WORD_FONTS = ('futural', 'scripts')
 
-
-
-class Processes:
-    """Everything the bench starts, stopped by stop_all() whatever happens."""
-
-    def __init__(self, log_dir):
-        self.log_dir = log_dir
-        self.running = []
-
-    def start(self, name, *command, **env):
-        log = open(os.path.join(self.log_dir, f'{name}.log'), 'w')
-        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
-                                   stdin=subprocess.DEVNULL, env=dict(os.environ, **env))
-        self.running.append(process)
-        return process
-
-    def stop(self, process, sig=signal.SIGINT):
-        if process.poll() is None:
-            process.send_signal(sig)
-            try:
-                process.wait(15)
-            except subprocess.TimeoutExpired:
-                process.kill()
-                process.wait()
-        if process in self.running:
-            self.running.remove(process)
-
-    def stop_all(self):
-        for process in reversed(list(self.running)):
-            self.stop(process)
 
 
 class Load:

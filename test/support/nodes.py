@@ -71,14 +71,44 @@ class NodeProcess:
         self.process.send_signal(sig)
 
     def stop(self, sig=signal.SIGINT, timeout=15):
-        if self.alive():
-            self.process.send_signal(sig)
-            try:
-                self.process.wait(timeout)
-            except subprocess.TimeoutExpired:
-                self.process.kill()
-                self.process.wait()
-        return self.process.returncode
+        return stop_process(self.process, sig, timeout)
+
+
+def stop_process(process, sig=signal.SIGINT, timeout=15):
+    """Ask a child process to end; kill it if it will not."""
+    if process.poll() is None:
+        process.send_signal(sig)
+        try:
+            process.wait(timeout)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
+    return process.returncode
+
+
+class Processes:
+    """Processes started with their output in log_dir/NAME.log, all stopped
+    by stop_all() whatever happens (the bench's roscore, nodes and loads)."""
+
+    def __init__(self, log_dir):
+        self.log_dir = log_dir
+        self.running = []
+
+    def start(self, name, *command, **env):
+        log = open(os.path.join(self.log_dir, f'{name}.log'), 'w')
+        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
+                                   stdin=subprocess.DEVNULL, env=dict(os.environ, **env))
+        self.running.append(process)
+        return process
+
+    def stop(self, process, sig=signal.SIGINT):
+        stop_process(process, sig)
+        if process in self.running:
+            self.running.remove(process)
+
+    def stop_all(self):
+        for process in reversed(list(self.running)):
+            self.stop(process)
 
 
 def simulator():
