@@ -115,7 +115,7 @@ class TurtleController(LetterDrawer):
     def progress(self, ink_drawn, ink):
         """Every few seconds of a drawing: how far it is, and how long to go."""
         now = time.monotonic()
-        if now - self._last_progress < PROGRESS_PERIOD or not 0 < ink_drawn < ink:
+        if now - self._last_progress < PROGRESS_PERIOD or not 0 < ink_drawn < ink - 1e-6:
             return
         self._last_progress = now
         elapsed = now - self._started
