@@ -77,8 +77,15 @@ def ideal_strokes(letter, size):
     return glyph_strokes(glyph_for(letter), place, size)
 
 
+def forget_controller_parameters():
+    """The parameter server keeps an earlier run's _name:=value."""
+    if rospy.has_param(CONTROLLER):
+        rospy.delete_param(CONTROLLER)
+
+
 def one_run(args, processes, recorder, chatter, sim_pid, mode):
     rospy.ServiceProxy('/reset', Empty)()
+    forget_controller_parameters()
     controller = processes.start(
         'controller', 'rosrun', 'turtle_letters', 'turtle_controller.py',
         *MODES[mode], f'_letter:={args.letter}', f'_size:={args.size}')
@@ -132,6 +139,7 @@ def word_run(processes, recorder, font, size=1.0, speed=1.0):
     from turtle_letters.route import travel_length
     from turtle_letters.settings import Settings
     rospy.ServiceProxy('/reset', Empty)()
+    forget_controller_parameters()
     controller = processes.start(
         'controller', 'rosrun', 'turtle_letters', 'turtle_controller.py', '_mode:=smooth',
         f'_font:={font}', f'_size:={size}', f'_linear_speed:={speed}')
