@@ -12,6 +12,7 @@ import math
 from typing import List, NamedTuple
 
 from .font import BUILTIN
+from .settings import DEFAULT_PEN
 from .plan import Layout, Line, Pen, PlannedPose, Turn, plan_strokes, word_strokes
 from .route import ink_length, order_strokes, travel_length
 
@@ -29,10 +30,15 @@ class LetterDrawer:
     def __init__(self, settings):
         self.settings = settings
         self._layout = None
+        # turtlesim's pen starts down in its default colour: a call is needed
+        # only for another colour, or when the pen may have been left up
+        self._pen_ready = settings.pen == DEFAULT_PEN
 
     def forget_layout(self):
-        """The next drawing starts a new layout where the turtle then is."""
+        """After a failed drawing: the next one starts a new layout where the
+        turtle then is, and puts the pen down first."""
         self._layout = None
+        self._pen_ready = False
 
     def reserve(self, text, where: PlannedPose):
         """The places of `text`'s characters and whether the canvas must be
@@ -65,7 +71,9 @@ class LetterDrawer:
         """Carry out a plan; progress(ink drawn, ink in all) after each part."""
         if must_clear:
             self.clear()
-        self.pen(True)
+        if not self._pen_ready:
+            self.pen(True)
+            self._pen_ready = True
         drawn = 0.0
         if self.settings.mode == 'smooth':
             here = plan.start

@@ -43,13 +43,12 @@ class Recorder(LetterDrawer):
 
 def test_the_labs_n_is_the_labs_six_calls():
     assert Recorder().draw('N') == [
-        ('pen', True),
         ('rotate', 90.0), ('move', 3.0), ('rotate', 225.0), ('move', 3.5),
         ('rotate', 135.0), ('move', 3.0)]
 
 
 def test_feedback_mode_steers_the_same_primitives():
-    assert Recorder(mode='feedback').draw('N') == [('pen', True)] + [
+    assert Recorder(mode='feedback').draw('N') == [
         ('steer', 'Turn'), ('steer', 'Line')] * 3
 
 
@@ -57,7 +56,7 @@ def test_travel_to_a_stroke_lifts_the_pen():
     calls = Recorder(size=1.0).draw('K')
     pens = [c for c in calls if c[0] == 'pen']
     # K's three strokes each start away from where the turtle is
-    assert pens == [('pen', True)] + [('pen', False), ('pen', True)] * 3
+    assert pens == [('pen', False), ('pen', True)] * 3
 
 
 def test_a_full_canvas_is_cleared_and_drawing_starts_again_at_the_first_place():
@@ -82,10 +81,10 @@ def test_a_word_that_does_not_fit_is_refused_and_reserves_nothing():
 
 
 def test_smooth_mode_glides_through_each_stroke_lifting_the_pen_between():
-    assert Recorder(mode='smooth').draw('N') == [('pen', True), ('glide', 3)]
+    assert Recorder(mode='smooth').draw('N') == [('glide', 3)]
     calls = Recorder(mode='smooth', size=1.0).draw('K')
     # as in timed mode: three travels, each to a stroke of one edge
-    assert calls == [('pen', True)] + [('pen', False), ('glide', 1), ('pen', True),
+    assert calls == [('pen', False), ('glide', 1), ('pen', True),
                                        ('glide', 1)] * 3
 
 
@@ -107,3 +106,10 @@ def test_a_hershey_word_is_drawn_in_the_shorter_order():
     from turtle_letters.plan import word_strokes
     reading = word_strokes('Hi!', places, 1.0, drawer.settings.font)
     assert plan.travel < travel_length(reading, plan.start)
+
+
+def test_a_pen_of_another_colour_is_put_down_before_the_first_drawing_only():
+    drawer = Recorder(pen='230 40 40 3')
+    assert drawer.draw('N')[0] == ('pen', True)
+    drawer.calls.clear()
+    assert drawer.draw('N')[0] == ('pen', False)      # straight to the travel
