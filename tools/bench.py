@@ -34,7 +34,8 @@ from turtle_letters.plan import (Layout, PlannedPose, glyph_for, glyph_strokes, 
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'test'))
 from support.accuracy import distance_to_polyline, vertex_errors  # noqa: E402
-from support.nodes import Processes, PoseRecorder, subscribed, wait_until  # noqa: E402
+from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # noqa: E402
+                           wait_until)
 from support.procstat import cpu_seconds, rss_mb  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
@@ -77,6 +78,18 @@ def ideal_strokes(letter, size):
     return glyph_strokes(glyph_for(letter), place, size)
 
 
+def wait_for_controller_connections(recorder):
+    """The controller hears the poses, and its cmd_vel reaches the simulator
+    and our recorder: from then on a trigger's latency is the controller's own."""
+    wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 30,
+               "the controller's pose subscription")
+    wait_until(lambda: connections(CONTROLLER, '/turtle1/cmd_vel', 'o') >= 2, 30,
+               "the controller's cmd_vel connected to the simulator and to us")
+    # A user presses P seconds after the start: let the node's own start-up
+    # (imports, threads, first messages) end before the clock starts.
+    time.sleep(1.0)
+
+
 def forget_controller_parameters():
     """The parameter server keeps an earlier run's _name:=value."""
     if rospy.has_param(CONTROLLER):
@@ -91,8 +104,7 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
         *MODES[mode], f'_letter:={args.letter}', f'_size:={args.size}')
     try:
         wait_until(lambda: chatter.get_num_connections() > 0, 30, 'the controller on /chatter')
-        wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 30,
-                   "the controller's pose subscription")
+        wait_for_controller_connections(recorder)
         recorder.reset()
         sim_cpu0 = cpu_seconds(sim_pid)
         ctl_cpu0 = cpu_seconds(controller.pid)
@@ -113,7 +125,8 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
     t_stop = next((t for t, m in commands if t > t_last and not m), t_last)
     drawing = t_stop - t_first
     during = [(t, p) for t, p in poses if t_first <= t <= t_stop + 0.1]
-    path = [(p.x, p.y) for t, p in poses if t >= t_trigger]
+    before = [p for t, p in poses if t < t_trigger][-1:]   # where the turtle stood
+    path = [(p.x, p.y) for p in before + [p for t, p in poses if t >= t_trigger]]
     strokes = ideal_strokes(args.letter, args.size)
     vertices = [v for s in strokes for v in s]
     end = poses[-1][1]
@@ -146,8 +159,7 @@ def word_run(processes, recorder, font, size=1.0, speed=1.0):
     text = rospy.Publisher(CONTROLLER + '/text', String, queue_size=1)
     try:
         wait_until(lambda: text.get_num_connections() > 0, 30, 'the controller on ~text')
-        wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 30,
-                   "the controller's pose subscription")
+        wait_for_controller_connections(recorder)
         recorder.reset()
         text.publish(String(WORD))
         recorder.wait_until_commands_end(600, 'the word to be drawn')

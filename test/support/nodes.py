@@ -34,15 +34,20 @@ def wait_for_connections(endpoint, timeout=20, what=None):
                what or f'a connection on {endpoint.resolved_name}')
 
 
-def subscribed(node, topic):
-    """Whether `node` has a live incoming connection on `topic` (asked of the
-    node itself, over its XML-RPC API)."""
+def connections(node, topic, direction):
+    """How many live connections `node` has on `topic`, incoming ('i') or
+    outgoing ('o'), asked of the node itself over its XML-RPC API."""
     try:
         uri = rosgraph.Master(rospy.get_name()).lookupNode(node)
-        _, _, connections = xmlrpc.client.ServerProxy(uri).getBusInfo(rospy.get_name())
+        _, _, bus = xmlrpc.client.ServerProxy(uri).getBusInfo(rospy.get_name())
     except Exception:
-        return False
-    return any(c[2] == 'i' and c[4] == topic and c[5] for c in connections)
+        return 0
+    return sum(1 for c in bus if c[2] == direction and c[4] == topic and c[5])
+
+
+def subscribed(node, topic):
+    """Whether `node` receives `topic` from someone."""
+    return connections(node, topic, 'i') > 0
 
 
 class NodeProcess:
@@ -148,8 +153,8 @@ class PoseRecorder:
         self._subscriber = rospy.Subscriber('/turtle1/pose', Pose, self._on_pose,
                                             queue_size=10000, tcp_nodelay=True)
         if with_commands:
-            rospy.Subscriber('/turtle1/cmd_vel', Twist, self._on_cmd_vel, queue_size=10000,
-                             tcp_nodelay=True)
+            self._commands = rospy.Subscriber('/turtle1/cmd_vel', Twist, self._on_cmd_vel,
+                                              queue_size=10000, tcp_nodelay=True)
 
     def _on_pose(self, msg):
         with self.lock:
