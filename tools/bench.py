@@ -106,6 +106,7 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
         wait_until(lambda: chatter.get_num_connections() > 0, 30, 'the controller on /chatter')
         wait_for_controller_connections(recorder)
         recorder.reset()
+        wait_until(lambda: recorder.poses, 5, 'a pose of the turtle before the trigger')
         sim_cpu0 = cpu_seconds(sim_pid)
         ctl_cpu0 = cpu_seconds(controller.pid)
         t_trigger = time.time()
