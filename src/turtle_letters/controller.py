@@ -1,8 +1,8 @@
 """The turtle controller node: draws letters when it hears the trigger.
 
 Pose messages are the clock: turtlesim publishes one per 16 ms tick, and the
-drawing thread sends one command per pose it receives, so cmd_vel goes out at
-the simulator's own 62.5 Hz and nothing ever waits in a loop of its own.
+drawing thread decides one command per pose it receives (sent when it
+changes, see driver.py), so nothing ever waits in a loop of its own.
 
 The drawing runs on its own thread, one primitive after the other, so that it
 reads like the lab: rotate(90); move(3.0); ... Stepping a state machine from
@@ -10,18 +10,23 @@ the pose callback instead (as turtlesim's draw_square does) would need the
 sequence cut into states; the thread keeps it a plain sequence.
 """
 import math
+import os
 import sys
 import threading
 import time
 import traceback
 
+import rosgraph
+import rosgraph.names
 import rospy
 from std_msgs.msg import String
 
+from .claims import Claims
 from .driver import DrawingAborted, TurtleDriver
 from .drawing import LetterDrawer
 from .jobs import Jobs
-from .motion import EXECUTORS, STOP, SmoothExecutor, TimedExecutor
+from .motion import EXECUTORS, STOP, SmoothExecutor, StallWatch, TimedExecutor
+from .parts import free_place, letter_bounds, on_canvas, overlaps, part_box, text_width
 from .plan import DoesNotFit, Line, PlannedPose, Turn, wrap
 from .settings import ParameterError, Settings, quote_unreadable
 
@@ -30,24 +35,199 @@ from .settings import ParameterError, Settings, quote_unreadable
 IGNORED_LOG_PERIOD = 10.0
 THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
 PROGRESS_PERIOD = 5.0       # s between two progress lines of a drawing
+STALL_SECONDS = 1.0         # s a turtle may disobey before the drawing stops
+CONNECT_SECONDS = 5.0       # s a new turtle's topics may take to connect
+CLAIM_SETTLE = 0.3          # s for controllers that chose at the same time to see each other
+CLAIM_ATTEMPTS = 20
 
 
-class TurtleController(LetterDrawer):
+class Refused(RuntimeError):
+    """This controller cannot have a turtle or a place: it says why and exits."""
+
+
+class TurtleDrawer(LetterDrawer):
+    """The lab's primitives on one turtle, through a TurtleDriver: the
+    controller's own turtle, or a spare one of a parallel word."""
+
+    def __init__(self, settings: Settings, driver: TurtleDriver, label=''):
+        super().__init__(settings)
+        self.driver = driver
+        self.label = label          # said before each line of a spare turtle
+
+    def rotate(self, degrees):
+        """Turn in place by `degrees` (counter-clockwise positive), timed."""
+        pose = self._fresh_pose()
+        angle = math.radians(degrees)
+        self._execute(Turn(angle, wrap(pose.theta + angle)), self._timed)
+
+    def move(self, meters):
+        """Drive `meters` straight ahead, timed."""
+        pose = self._fresh_pose()
+        self._execute(Line(meters, pose.x + meters * math.cos(pose.theta),
+                           pose.y + meters * math.sin(pose.theta), pose.theta), self._timed)
+
+    def steer(self, primitive):
+        """Reach the primitive's end, closed loop on the pose."""
+        self._fresh_pose()
+        self._execute(primitive, EXECUTORS['feedback'])
+
+    def glide(self, points):
+        """Smooth mode: trace the polyline through `points` without stopping."""
+        if points:
+            self._fresh_pose()
+            self._run(SmoothExecutor(points, self.settings.linear_speed),
+                      f'glide through {len(points)} points')
+
+    def pen(self, down):
+        self.driver.set_pen(self.settings.pen, down)
+
+    def draw_one(self, char, place):
+        """One character at its place, from where the turtle stands (a parallel word's part)."""
+        pose = self.driver.wait_for_pose()
+        start = PlannedPose(pose.x, pose.y, pose.theta)
+        self.trace(self.plan(char, [place], start), must_clear=False)
+
+    def _timed(self, primitive, linear_speed, angular_speed):
+        return TimedExecutor(primitive, linear_speed, angular_speed, self.settings.clock)
+
+    def _fresh_pose(self):
+        pose = self.driver.wait_for_pose()
+        self.driver.drop_stale_poses()
+        return pose
+
+    def _execute(self, primitive, executor_type):
+        s = self.settings
+        self._run(executor_type(primitive, s.linear_speed, s.angular_speed), _describe(primitive))
+
+    def _run(self, executor, description):
+        """One command per pose until the executor is done, then a stop.
+        A turtle that does not do as told for STALL_SECONDS stops the drawing."""
+        driver = self.driver
+        rospy.loginfo('%s%s: start at %s', self.label, description, _pose_text(driver.latest_pose))
+        watch = StallWatch(STALL_SECONDS)
+        command = executor.start(driver.latest_pose)
+        while command is not None:
+            driver.publish(command)
+            watch.sent(command)
+            pose = driver.next_pose()
+            if watch.stalled(pose, time.monotonic()):
+                raise DrawingAborted(stall_diagnosis(driver, pose))
+            command = executor.update(pose)
+        driver.publish(STOP)
+        rospy.loginfo('%s%s: end at %s', self.label, description, _pose_text(driver.latest_pose))
+
+
+class TurtleController(TurtleDrawer):
     """The lab's class. Subscribes `chatter` (the trigger, or typed keys) and
-    `~text` (std_msgs/String: a word to draw); drives the turtle through a
-    TurtleDriver. Parameters: see settings.PARAMETERS."""
+    `~text` (std_msgs/String: a word to draw); drives the turtle `~turtle`
+    through a TurtleDriver, spawning it if turtlesim has none of that name.
+    Parameters: see settings.PARAMETERS."""
 
     def __init__(self, settings: Settings):
-        super().__init__(settings)
-        self.driver = TurtleDriver()
+        super().__init__(settings, TurtleDriver(settings.turtle))
         self.jobs = Jobs()
+        self.claims = Claims(settings.turtle, self.driver.name)
+        self.spawned = False            # we spawned our turtle: we kill it when we go
+        self._placed = threading.Event()
         self._started = self._last_progress = 0.0
+        rospy.on_shutdown(self._leave)
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=10)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
         self._worker = threading.Thread(target=self._work, name='drawing', daemon=True)
         self._worker.start()
         if settings.text:
             self.request(settings.text, 'the ~text parameter')
+
+    # -- the turtle and its place ---------------------------------------------
+    def take_place(self):
+        """Find our turtle, or spawn it at a place of its own; then drawings
+        may start. Raises Refused with the reason."""
+        waited = self._wait_for_simulator()
+        holder = self.claims.holder()
+        if holder:
+            raise Refused(f'turtle {self.driver.name} is already driven by {holder}; '
+                          'give another name (turtle:= or name:=)')
+        s = self.settings
+        width = text_width(s.text, s.font)
+        # turtlesim offers spawn a moment before it has spawned turtle1
+        if self.driver.exists(wait=0.5):
+            pose = self.driver.wait_for_pose(say=not waited)
+            if s.x is not None:
+                rospy.logwarn('Turtle %s already exists: ~x and ~y are ignored; its first letter '
+                              'starts where it stands', self.driver.name)
+            # The lab: the whole canvas from where the turtle stands. Its
+            # first letter's place is claimed so that no one spawns there.
+            self.claims.claim(part_box((pose.x, pose.y), s.font.widest, s.size, s.font))
+        else:
+            place, box = self._claim_a_part(width)
+            self._spawn(place)
+            self.part = (place, letter_bounds(box, s.size, s.font))
+            rospy.loginfo('Turtle %s has the part x %.2f-%.2f, y %.2f-%.2f of the canvas',
+                          self.driver.name, *box[0::2], *box[1::2])
+        self._placed.set()
+
+    def _wait_for_simulator(self):
+        """Whether we had to wait (and said so)."""
+        spawn = self.driver.spawn_service
+        try:
+            rospy.wait_for_service(spawn, timeout=2.0)
+            return False
+        except rospy.ROSException:
+            rospy.loginfo('Waiting for turtlesim: no %s service yet; drawings start when it comes',
+                          spawn)
+            rospy.wait_for_service(spawn)
+            return True
+
+    def _claim_a_part(self, width):
+        """A part no live controller has, claimed; controllers that chose the
+        same place at the same moment settle it by name (the first stays)."""
+        s = self.settings
+        for _ in range(CLAIM_ATTEMPTS):
+            taken = self.claims.others()
+            if s.x is not None:
+                place = (s.x, s.y)
+                box = part_box(place, width, s.size, s.font)
+                if not on_canvas(box, s.size, s.font):
+                    raise Refused(f'~x {s.x:g}, ~y {s.y:g}: letters of size {s.size:g} m '
+                                  'there would leave the canvas; choose another place')
+            else:
+                place = free_place(width, s.size, s.font, taken.values())
+                if place is None:
+                    raise Refused(f'no free part of the canvas is left for letters of size '
+                                  f'{s.size:g} m ({len(taken)} turtles have one); '
+                                  'try a smaller size:=')
+                box = part_box(place, width, s.size, s.font)
+            crossed = sorted(n for n, b in taken.items() if overlaps(box, b))
+            if crossed:
+                raise Refused(f'~x {s.x:g}, ~y {s.y:g}: the part there would cross that of '
+                              f'{", ".join(crossed)}; choose another place or give none')
+            self.claims.claim(box)
+            time.sleep(CLAIM_SETTLE)
+            rivals = [n for n, b in self.claims.others().items()
+                      if overlaps(box, b) and n < self.driver.name]
+            if not rivals:
+                return place, box
+            self.claims.release()
+            if s.x is not None:
+                raise Refused(f'~x {s.x:g}, ~y {s.y:g}: {rivals[0]} has just claimed a part '
+                              'there; choose another place or give none')
+        raise Refused('no part could be agreed on with the other controllers; try again')
+
+    def _spawn(self, place):
+        try:
+            self.driver.spawn(place[0], place[1], 0.0)
+        except rospy.ServiceException as e:
+            raise Refused(f'turtlesim would not spawn {self.driver.name}: {e}') from None
+        self.spawned = True
+        rospy.loginfo('Spawned turtle %s at x=%.2f y=%.2f, facing +x', self.driver.name, *place)
+        if not self.driver.wait_connected(CONNECT_SECONDS):
+            rospy.logwarn('%s', not_connected_diagnosis(self.driver))
+
+    def _leave(self):
+        """On shutdown: give the part back, and the turtle if we spawned it."""
+        self.claims.release()
+        if self.spawned:
+            _call_briefly(self.driver.kill)
 
     # -- requests --------------------------------------------------------------
     def _on_chatter(self, msg):
@@ -87,31 +267,6 @@ class TurtleController(LetterDrawer):
             rospy.logwarn_throttle(IGNORED_LOG_PERIOD, 'Key %r ignored: %d keys are already '
                                    'waiting' + THROTTLED, char, self.jobs.typed_ahead)
 
-    # -- the lab's primitives --------------------------------------------------
-    def rotate(self, degrees):
-        """Turn in place by `degrees` (counter-clockwise positive), timed."""
-        pose = self._fresh_pose()
-        angle = math.radians(degrees)
-        self._execute(Turn(angle, wrap(pose.theta + angle)), self._timed)
-
-    def move(self, meters):
-        """Drive `meters` straight ahead, timed."""
-        pose = self._fresh_pose()
-        self._execute(Line(meters, pose.x + meters * math.cos(pose.theta),
-                           pose.y + meters * math.sin(pose.theta), pose.theta), self._timed)
-
-    def steer(self, primitive):
-        """Reach the primitive's end, closed loop on the pose."""
-        self._fresh_pose()
-        self._execute(primitive, EXECUTORS['feedback'])
-
-    def glide(self, points):
-        """Smooth mode: trace the polyline through `points` without stopping."""
-        if points:
-            self._fresh_pose()
-            self._run(SmoothExecutor(points, self.settings.linear_speed),
-                      f'glide through {len(points)} points')
-
     def progress(self, ink_drawn, ink):
         """Every few seconds of a drawing: how far it is, and how long to go."""
         now = time.monotonic()
@@ -122,37 +277,21 @@ class TurtleController(LetterDrawer):
         rospy.loginfo('%.0f%% of the ink drawn (%.2f of %.2f m); about %.0f s to go',
                       100 * ink_drawn / ink, ink_drawn, ink, elapsed * (ink - ink_drawn) / ink_drawn)
 
-    def pen(self, down):
-        self.driver.set_pen(self.settings.pen, down)
-
     def clear(self):
+        """The canvas (or our part) is full. A shared canvas is never cleared:
+        that would wipe everyone's drawing."""
+        others = self.claims.others()
+        if self.part is not None or others:
+            rospy.loginfo("Turtle %s's part of the canvas is full: starting again at its first "
+                          'place (the canvas is shared%s, so it is not cleared)', self.driver.name,
+                          f' with {", ".join(sorted(others))}' if others else '')
+            return
         rospy.loginfo('The canvas is full: clearing it and starting again at the first place')
         self.driver.clear()
 
-    def _timed(self, primitive, linear_speed, angular_speed):
-        return TimedExecutor(primitive, linear_speed, angular_speed, self.settings.clock)
-
-    def _fresh_pose(self):
-        pose = self.driver.wait_for_pose()
-        self.driver.drop_stale_poses()
-        return pose
-
-    def _execute(self, primitive, executor_type):
-        s = self.settings
-        self._run(executor_type(primitive, s.linear_speed, s.angular_speed), _describe(primitive))
-
-    def _run(self, executor, description):
-        """One command per pose until the executor is done, then a stop."""
-        rospy.loginfo('%s: start at %s', description, _pose_text(self.driver.latest_pose))
-        command = executor.start(self.driver.latest_pose)
-        while command is not None:
-            self.driver.publish(command)
-            command = executor.update(self.driver.next_pose())
-        self.driver.publish(STOP)
-        rospy.loginfo('%s: end at %s', description, _pose_text(self.driver.latest_pose))
-
     # -- the drawing thread ----------------------------------------------------
     def _work(self):
+        self._placed.wait()
         while not rospy.is_shutdown():
             text = self.jobs.take(timeout=0.5)
             if text is None:
@@ -168,9 +307,14 @@ class TurtleController(LetterDrawer):
 
     def draw(self, text):
         """Draw `text` at the next free places on the canvas."""
+        if self.spawned and not self.driver.exists():
+            self._respawn()
         pose = self.driver.wait_for_pose()
         start = PlannedPose(pose.x, pose.y, pose.theta)
         places, must_clear = self.reserve(text, start)
+        if self.settings.parallel and sum(p is not None for p in places) > 1:
+            self._draw_parallel(text, places, must_clear, start)
+            return
         plan = self.plan(text, places, start)
         rospy.loginfo('Drawing %r (%s mode): ink %.2f m, travel %.2f m, about %.0f s', text,
                       self.settings.mode, plan.ink, plan.travel, plan.seconds)
@@ -178,6 +322,57 @@ class TurtleController(LetterDrawer):
         self.trace(plan, must_clear)
         rospy.loginfo('Done drawing %r; the turtle is at %s', text,
                       _pose_text(self.driver.latest_pose))
+
+    def _respawn(self):
+        """turtlesim came back without our turtle: it starts again at its part's first place."""
+        self.driver.forget_poses()
+        self.spawned = False
+        self._spawn(self.part[0])
+
+    def _draw_parallel(self, text, places, must_clear, start):
+        """One turtle per character, all at once: ours draws the first, a
+        spare turtle spawned at each other character's place draws that one."""
+        chars = [(c, p) for c, p in zip(text, places) if p is not None]
+        rospy.loginfo('Drawing %r in parallel: %d turtles (%s mode)', text, len(chars),
+                      self.settings.mode)
+        if must_clear:
+            self.clear()
+        spares = []
+        try:
+            for number, (char, place) in enumerate(chars[1:], 2):
+                spares.append(self._spare_turtle(number, place))
+            drawers = [self] + spares
+            self._started = self._last_progress = time.monotonic()
+            errors = _all_at_once([lambda d=d, c=c, p=p: d.draw_one(c, p)
+                                   for d, (c, p) in zip(drawers, chars)])
+            if errors:
+                raise errors[0]
+        finally:
+            for spare in spares:
+                spare.driver.stop()
+                _call_briefly(spare.driver.kill)
+                spare.driver.close()
+        rospy.loginfo('Done drawing %r; the turtle is at %s', text,
+                      _pose_text(self.driver.latest_pose))
+
+    def _spare_turtle(self, number, place):
+        graph_name = rosgraph.names.ns_join(
+            rosgraph.names.namespace(rospy.resolve_name(self.settings.turtle)),
+            f'{self.driver.name}_{number}')
+        driver = TurtleDriver(graph_name)
+        try:
+            driver.spawn(place[0], place[1], 0.0)
+        except rospy.ServiceException as e:
+            driver.close()
+            raise DrawingAborted(f'turtlesim would not spawn the spare turtle {driver.name}: '
+                                 f'{e}') from None
+        spare = TurtleDrawer(self.settings, driver, label=f'{driver.name}: ')
+        if not driver.wait_connected(CONNECT_SECONDS):
+            spare.driver.stop()
+            _call_briefly(driver.kill)
+            driver.close()
+            raise DrawingAborted(not_connected_diagnosis(driver))
+        return spare
 
     def _abandon(self, text, error):
         """Stop the turtle and forget the layout: the simulator may come back
@@ -192,6 +387,82 @@ class TurtleController(LetterDrawer):
             cause = f'{type(error).__name__}: {error}'
             rospy.logdebug('Drawing of %r failed:\n%s', text, traceback.format_exc())
         rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text, cause)
+
+
+def _all_at_once(calls):
+    """Run the calls on threads of their own; the exceptions they raised."""
+    errors = []
+
+    def run(call):
+        try:
+            call()
+        except Exception as e:  # handed to the drawing thread
+            errors.append(e)
+    threads = [threading.Thread(target=run, args=(c,), daemon=True) for c in calls]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    return errors
+
+
+def _call_briefly(call, timeout=2.0):
+    """A service call that must not hold up a shutdown: at most `timeout` s."""
+    thread = threading.Thread(target=lambda: _quietly(call), daemon=True)
+    thread.start()
+    thread.join(timeout)
+
+
+def _quietly(call):
+    try:
+        call()
+    except Exception:   # the turtle or turtlesim is gone already: nothing to undo
+        pass
+
+
+def advertised():
+    """This node's URI, and which setting made its host name."""
+    if os.environ.get('ROS_IP'):
+        source = f'ROS_IP={os.environ["ROS_IP"]}'
+    elif os.environ.get('ROS_HOSTNAME'):
+        source = f'ROS_HOSTNAME={os.environ["ROS_HOSTNAME"]}'
+    else:
+        source = 'neither ROS_IP nor ROS_HOSTNAME is set, so it is the host name'
+    return f'{rospy.get_node_uri()} ({source})'
+
+
+def stall_diagnosis(driver, pose):
+    """What was seen when a turtle did not move as commanded, and what to check."""
+    linear_x, linear_y, angular = driver.commanded
+    seen = (f'turtle {driver.name} did not move as commanded for {STALL_SECONDS:g} s although '
+            f'its poses arrive: it moves at {pose.linear_velocity:.2f} m/s and '
+            f'{pose.angular_velocity:.2f} rad/s, we command {math.hypot(linear_x, linear_y):.2f} '
+            f'm/s and {angular:.2f} rad/s on {driver.cmd_vel_topic}')
+    others = _other_publishers(driver.cmd_vel_topic)
+    if others:
+        return f'{seen}; {", ".join(others)} publish there too: only one node may drive a turtle'
+    if driver.cmd_vel_connections() == 0:
+        return f'{seen}; turtlesim has not connected to it. {_reach_advice()}'
+    return f'{seen}; turtlesim hears it: check the remaps of cmd_vel and pose'
+
+
+def not_connected_diagnosis(driver):
+    return (f'turtlesim has not connected to {driver.cmd_vel_topic} within {CONNECT_SECONDS:g} s, '
+            f'so turtle {driver.name} will not move. {_reach_advice()}')
+
+
+def _reach_advice():
+    return (f"Check that the simulator's host can resolve and reach this machine as it "
+            f'advertises itself, {advertised()}; set ROS_IP or ROS_HOSTNAME to an address it '
+            'can reach; rosrun turtle_letters check_network.py checks this machine')
+
+
+def _other_publishers(topic):
+    try:
+        publishers, _, _ = rosgraph.Master(rospy.get_name()).getSystemState()
+    except Exception:  # the master is gone: nothing more to say
+        return []
+    return [n for t, nodes in publishers if t == topic for n in nodes if n != rospy.get_name()]
 
 
 def _describe(primitive):
@@ -213,7 +484,15 @@ def main():
     except ParameterError as e:
         rospy.logfatal('%s: %s', rospy.get_name(), e)
         raise SystemExit(2)
-    TurtleController(settings)
-    rospy.loginfo('Ready: publish %r on %s to draw %r (%s mode)', settings.trigger,
-                  rospy.resolve_name('chatter'), settings.letter, settings.mode)
+    controller = TurtleController(settings)
+    try:
+        controller.take_place()
+    except Refused as e:
+        rospy.logfatal('%s: %s', rospy.get_name(), e)
+        raise SystemExit(2)
+    except rospy.ROSInterruptException:
+        return
+    rospy.loginfo('Ready: publish %r on %s to draw %r with turtle %s (%s mode)', settings.trigger,
+                  rospy.resolve_name('chatter'), settings.letter, controller.driver.name,
+                  settings.mode)
     rospy.spin()

@@ -5,7 +5,8 @@ rotate(degrees) and move(meters), so the lab's N is literally rotate(90),
 move(3.0), rotate(225), move(3.5), rotate(135), move(3.0); in feedback mode
 steer(primitive), which closes the loop on the pose; in smooth mode
 glide(points), which traces a whole stroke without stopping; pen(down) to
-lift the pen for travel; clear() when the canvas is full. A subclass supplies those calls:
+lift the pen for travel; clear() when the canvas (or the turtle's part of
+it) is full. A subclass supplies those calls:
 TurtleController with ROS, a recorder in the unit tests.
 """
 import math
@@ -29,6 +30,9 @@ class Plan(NamedTuple):
 class LetterDrawer:
     def __init__(self, settings):
         self.settings = settings
+        # On a shared canvas, (first place, bounds) of this turtle's part
+        # (see parts.py); None: the whole canvas, from where the turtle stands.
+        self.part = None
         self._layout = None
         # turtlesim's pen starts down in its default colour: a call is needed
         # only for another colour, or when the pen may have been left up
@@ -44,7 +48,11 @@ class LetterDrawer:
         """The places of `text`'s characters and whether the canvas must be
         cleared first; raises plan.DoesNotFit (then nothing was reserved)."""
         if self._layout is None:
-            self._layout = Layout((where.x, where.y), self.settings.size, self.settings.font)
+            s = self.settings
+            if self.part is None:
+                self._layout = Layout((where.x, where.y), s.size, s.font)
+            else:
+                self._layout = Layout(self.part[0], s.size, s.font, bounds=self.part[1])
         return self._layout.reserve(text)
 
     def plan(self, text, places, start: PlannedPose) -> Plan:

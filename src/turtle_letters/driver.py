@@ -1,38 +1,72 @@
-"""The turtle's ROS plumbing: its pose stream, its cmd_vel, its pen and the
-canvas. The stop on shutdown lives here, so nothing that moves the turtle can
-leave it coasting."""
+"""The turtle's ROS plumbing: its pose stream, its cmd_vel, its pen, its
+spawn and kill, and the canvas. The stop on shutdown lives here, so nothing
+that moves the turtle can leave it coasting."""
 import queue
 import threading
 import time
 
+import rosgraph.names
 import rospy
 from geometry_msgs.msg import Twist
 from std_srvs.srv import Empty
 from turtlesim.msg import Pose
-from turtlesim.srv import SetPen
+from turtlesim.srv import Kill, SetPen, Spawn
 
 POSE_TIMEOUT = 1.0      # s without a pose: the simulator is gone
 POSES_KEPT = 1000       # 16 s of ticks: the drawing thread reads far faster
+# A command is sent when it changes, and repeated while it holds so that
+# turtlesim (which stops a turtle after 1 s without one) keeps going. One
+# command per tick from 30 turtles was most of the simulator's work.
+REPEAT_PERIOD = 0.25    # s
 
 
 class DrawingAborted(RuntimeError):
     pass
 
 
-class TurtleDriver:
-    """Subscribes `turtle1/pose`; publishes `turtle1/cmd_vel`; calls
-    `turtle1/set_pen` and `clear`."""
+def simulator_service(turtle, service):
+    """turtlesim's own services (spawn, kill, clear) sit beside its turtles:
+    in the namespace that holds the turtle's name."""
+    return rosgraph.names.ns_join(rosgraph.names.namespace(rospy.resolve_name(turtle)), service)
 
-    def __init__(self):
+
+class TurtleDriver:
+    """Subscribes `TURTLE/pose`; publishes `TURTLE/cmd_vel`; calls
+    `TURTLE/set_pen`, and `spawn`, `kill` and `clear` beside the turtle.
+    TURTLE is a name like turtle1 (relative to the node's namespace) or /alice."""
+
+    def __init__(self, turtle='turtle1'):
+        self.turtle = turtle
+        self.name = rospy.resolve_name(turtle).rsplit('/', 1)[1]    # turtlesim's name for it
         self._poses = queue.Queue(maxsize=POSES_KEPT)
         self.latest_pose = None
+        self.commanded = (0.0, 0.0, 0.0)       # the last command sent
+        self._sent_at = 0.0
         self._publish_lock = threading.Lock()
         self._stopping = False                 # once set, only the stop goes out
-        self._cmd_vel = rospy.Publisher('turtle1/cmd_vel', Twist, queue_size=10)
-        self._set_pen = rospy.ServiceProxy('turtle1/set_pen', SetPen)
-        self._clear = rospy.ServiceProxy('clear', Empty)
-        rospy.Subscriber('turtle1/pose', Pose, self._on_pose, queue_size=100, tcp_nodelay=True)
+        self._cmd_vel = rospy.Publisher(f'{turtle}/cmd_vel', Twist, queue_size=10)
+        self._set_pen = rospy.ServiceProxy(f'{turtle}/set_pen', SetPen)
+        self._clear = rospy.ServiceProxy(simulator_service(turtle, 'clear'), Empty)
+        self._spawn = rospy.ServiceProxy(simulator_service(turtle, 'spawn'), Spawn)
+        self._kill = rospy.ServiceProxy(simulator_service(turtle, 'kill'), Kill)
+        self._pose_sub = rospy.Subscriber(f'{turtle}/pose', Pose, self._on_pose, queue_size=100,
+                                          tcp_nodelay=True)
         rospy.on_shutdown(self._on_shutdown)
+
+    @property
+    def pose_topic(self):
+        return self._pose_sub.resolved_name
+
+    @property
+    def spawn_service(self):
+        return self._spawn.resolved_name
+
+    @property
+    def cmd_vel_topic(self):
+        return self._cmd_vel.resolved_name
+
+    def cmd_vel_connections(self):
+        return self._cmd_vel.get_num_connections()
 
     def _on_pose(self, msg):
         self.latest_pose = msg
@@ -40,16 +74,19 @@ class TurtleDriver:
             self._poses.get_nowait()
         self._poses.put_nowait(msg)
 
-    def wait_for_pose(self):
-        """The latest pose, once there is one; says once that it waits."""
-        if self.latest_pose is None:
-            rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when it comes',
-                          rospy.resolve_name('turtle1/pose'))
+    def wait_for_pose(self, say=True):
+        """The latest pose, once there is one; says once that it waits (if
+        `say`, and none came within a second)."""
+        waited = 0
         while self.latest_pose is None and not rospy.is_shutdown():
+            if waited == 2 and say:
+                rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when '
+                              'it comes', self.pose_topic)
             try:
                 self._poses.get(timeout=0.5)
             except queue.Empty:
                 pass
+            waited += 1
         if self.latest_pose is None:
             raise DrawingAborted('shutting down')
         return self.latest_pose
@@ -68,19 +105,67 @@ class TurtleDriver:
             raise DrawingAborted('shutting down')
         return pose
 
-    def publish(self, command):
+    def publish(self, command, repeat=False):
+        """Send `command` (linear x, linear y, angular z) if it differs from
+        the last one, or the last one went out REPEAT_PERIOD ago, or `repeat`."""
+        command = tuple(command)
+        now = time.monotonic()
+        if command == self.commanded and now - self._sent_at < REPEAT_PERIOD and not repeat:
+            return
         twist = Twist()
         twist.linear.x, twist.linear.y, twist.angular.z = command
         with self._publish_lock:
             if not self._stopping:
                 self._cmd_vel.publish(twist)
+                self.commanded, self._sent_at = command, now
 
     def stop(self):
         """Stop the turtle now rather than let it coast for turtlesim's 1 s timeout."""
         try:
-            self.publish((0.0, 0.0, 0.0))
+            self.publish((0.0, 0.0, 0.0), repeat=True)
         except rospy.ROSException:
             pass    # already shut down: the shutdown hook sent the stop
+
+    def exists(self, wait=0.0):
+        """Whether turtlesim has this turtle (its pose topic is published),
+        looking again for up to `wait` s."""
+        master = rosgraph.Master(rospy.get_name())
+        deadline = time.monotonic() + wait
+        while True:
+            if any(name == self.pose_topic for name, _ in master.getPublishedTopics('')):
+                return True
+            if time.monotonic() >= deadline or rospy.is_shutdown():
+                return False
+            time.sleep(0.05)
+
+    def spawn(self, x, y, theta=0.0):
+        """Spawn the turtle; raises rospy.ServiceException if turtlesim refuses."""
+        self._spawn(x, y, theta, self.name)
+
+    def kill(self):
+        self._kill(self.name)
+
+    def wait_connected(self, timeout):
+        """Whether turtlesim hears our cmd_vel and we hear its poses within
+        `timeout` s (a new turtle's topics take a moment to connect)."""
+        deadline = time.monotonic() + timeout
+        while not rospy.is_shutdown() and time.monotonic() < deadline:
+            if self._cmd_vel.get_num_connections() and self._pose_sub.get_num_connections():
+                return True
+            time.sleep(0.02)
+        return False
+
+    def close(self):
+        """Let go of the turtle's topics (a spare turtle, once killed)."""
+        with self._publish_lock:
+            self._stopping = True
+        self._cmd_vel.unregister()
+        self._pose_sub.unregister()
+
+    def forget_poses(self):
+        """A new turtle of the same name: nothing of the old one counts."""
+        self.latest_pose = None
+        self.drop_stale_poses()
 
     def set_pen(self, pen, down):
         """Lowering the pen sets its colour and width too (turtlesim's set_pen)."""
@@ -92,6 +177,8 @@ class TurtleDriver:
     def _on_shutdown(self):
         """The last word on cmd_vel is a stop, even with a drawing under way."""
         with self._publish_lock:
+            if self._stopping:          # closed
+                return
             self._stopping = True
             self._cmd_vel.publish(Twist())
         # The publisher's queue thread sends it; give it a moment before

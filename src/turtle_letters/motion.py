@@ -162,6 +162,34 @@ class SmoothExecutor:
                        angular)
 
 
+class StallWatch:
+    """Notices a turtle that does not move as commanded although its poses
+    come: commands that never reach the simulator, or another node's
+    commands on the same cmd_vel. Turtlesim reports in each pose the
+    velocities it moved the turtle with; they must be one of the commands
+    sent lately (a command takes a tick or two to arrive)."""
+
+    def __init__(self, limit: float = 1.0, remembered: int = 8) -> None:
+        self.limit = limit              # s of disobedience before it counts
+        self.remembered = remembered    # how many recent commands may show
+        self.recent = []
+        self.since = None
+
+    def sent(self, command) -> None:
+        self.recent = (self.recent + [tuple(command)])[-self.remembered:]
+
+    def stalled(self, pose, now: float) -> bool:
+        """Whether, at `now` (s), the turtle has disobeyed for `limit` s."""
+        obeyed = any(abs(pose.linear_velocity - math.hypot(c[0], c[1])) < 1e-3
+                     and abs(pose.angular_velocity - c[2]) < 1e-3 for c in self.recent)
+        if obeyed or not any(any(c) for c in self.recent):     # obeying, or told to stand
+            self.since = None
+            return False
+        if self.since is None:
+            self.since = now
+        return now - self.since >= self.limit
+
+
 EXECUTORS = {'timed': TimedExecutor, 'feedback': FeedbackExecutor}
 MODES = ('timed', 'feedback', 'smooth')
 CLOCKS = ('sim', 'wall')

@@ -13,6 +13,9 @@ from .font import BUILTIN, Font, Glyph
 WORLD_SIZE = 499 / 45.0     # turtlesim's usable canvas, meters
 MARGIN = 0.5                # no stroke comes closer than this to a wall
 TURN_DIRECTIONS = ('ccw', 'shortest')
+# Poses come as float32: a heading read from one may be a few microradians
+# off the plan's, and that must not make a full turn of an almost-zero one.
+ANGLE_TOLERANCE = 1e-5      # rad
 
 
 class Turn(NamedTuple):
@@ -51,7 +54,7 @@ def turn_between(heading: float, target: float, direction: str) -> float:
     lab's way, 0 to 2 pi) or the shorter way (-pi to pi)."""
     if direction == 'ccw':
         angle = (target - heading) % (2.0 * math.pi)
-        return 0.0 if math.isclose(angle, 2.0 * math.pi, abs_tol=1e-9) else angle
+        return 0.0 if math.isclose(angle, 2.0 * math.pi, abs_tol=ANGLE_TOLERANCE) else angle
     return wrap(target - heading)
 
 
@@ -65,7 +68,7 @@ def path(points: List[Tuple[float, float]], start: PlannedPose, direction: str):
             continue
         target = math.atan2(py - y, px - x)
         angle = turn_between(heading, target, direction)
-        if abs(angle) > 1e-9:
+        if abs(angle) > ANGLE_TOLERANCE:
             primitives.append(Turn(angle, target))
         heading = target
         primitives.append(Line(length, px, py, heading))
@@ -131,25 +134,34 @@ LARGEST_SIZE = largest_size(BUILTIN)
 class Layout:
     """Letter places on the canvas, like a typewriter: the first at
     `first_place`, then to the right, then a new line below at the left
-    margin; when the canvas is full, it is cleared and we start again."""
+    margin; when the canvas is full, it is cleared and we start again.
+
+    With `bounds` (a part of a shared canvas, see parts.py) the letters stay
+    inside that box instead, and new lines start below the first place."""
 
     def __init__(self, first_place: Tuple[float, float], size: float,
-                 font: Font = BUILTIN) -> None:
+                 font: Font = BUILTIN, bounds=None) -> None:
         self.size = size
         self.font = font
-        self.left = MARGIN + font.overhang * size     # where a new line starts
-        if not self.fits_at(*first_place, font.widest):
-            # The turtle starts too near a wall for this size: begin top left.
-            first_place = (self.left, WORLD_SIZE - MARGIN - font.ascent * size)
+        self.bounds = bounds
+        if bounds is not None:
+            self.left = first_place[0]
+        else:
+            self.left = MARGIN + font.overhang * size     # where a new line starts
+            if not self.fits_at(*first_place, font.widest):
+                # The turtle starts too near a wall for this size: begin top left.
+                first_place = (self.left, WORLD_SIZE - MARGIN - font.ascent * size)
         self.first_place = first_place
         self.cursor = first_place
 
     def fits_at(self, x: float, y: float, width: float) -> bool:
-        high = WORLD_SIZE - MARGIN
+        low_x, low_y, high_x, high_y = self.bounds or (MARGIN, MARGIN, WORLD_SIZE - MARGIN,
+                                                       WORLD_SIZE - MARGIN)
         reach = self.font.overhang * self.size
-        return (MARGIN <= x - reach and x + width * self.size + reach <= high
-                and MARGIN <= y - self.font.descent * self.size
-                and y + self.font.ascent * self.size <= high)
+        slack = 1e-9
+        return (low_x <= x - reach + slack and x + width * self.size + reach <= high_x + slack
+                and low_y <= y - self.font.descent * self.size + slack
+                and y + self.font.ascent * self.size <= high_y + slack)
 
     def places(self, widths: List[float], cursor: Tuple[float, float]):
         """Where boxes of these widths go from `cursor`, or None once the canvas is full."""
@@ -181,8 +193,9 @@ class Layout:
             placed, cursor = self.places(widths, self.first_place)
             cleared = True
             if placed is None:
+                where = 'on the canvas' if self.bounds is None else "in the turtle's part of the canvas"
                 raise DoesNotFit(
-                    f'"{text}" does not fit on the canvas at size {self.size:g} m: '
+                    f'"{text}" does not fit {where} at size {self.size:g} m: '
                     f'at most {self.how_many_fit(widths)} of its {len(text)} characters fit')
         self.cursor = cursor
         return [None if c == ' ' else p for c, p in zip(text, placed)], cleared

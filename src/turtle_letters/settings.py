@@ -3,6 +3,7 @@ one place. No ROS here: the node passes rospy.get_param in, and the launch
 file's check passes the launch arguments, so a bad value is refused before
 anything starts."""
 import math
+import re
 from typing import Callable, NamedTuple
 
 import yaml
@@ -10,7 +11,7 @@ import yaml
 from .font import BUILTIN
 from .hershey import FontError, load_font
 from .motion import CLOCKS, MODES
-from .plan import TURN_DIRECTIONS, largest_size
+from .plan import MARGIN, TURN_DIRECTIONS, WORLD_SIZE, largest_size
 
 
 DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own: r, g, b, width in pixels
@@ -57,6 +58,28 @@ def _text(value, font):
     if font.undrawable(text):
         raise ValueError(f'{_characters(font)} and space (no glyph for {font.undrawable(text)})')
     return text
+
+
+# A turtle's name becomes part of its topic names, so turtlesim itself would
+# fail on one that is not a valid ROS name.
+TURTLE_NAME = re.compile(r'/?([A-Za-z][A-Za-z0-9_]*/)*[A-Za-z][A-Za-z0-9_]*')
+
+
+def _turtle(value, font=None):
+    if not isinstance(value, str) or not TURTLE_NAME.fullmatch(value):
+        raise ValueError('a ROS name such as turtle1 or /alice: letters, digits and _, '
+                         'starting with a letter')
+    return value
+
+
+def _place(value, font=None):
+    if value == '':
+        return None
+    if isinstance(value, bool) or not isinstance(value, (int, float)) \
+            or not MARGIN <= value <= WORLD_SIZE - MARGIN:
+        raise ValueError(f'"" (a free place) or a number from {MARGIN:g} to '
+                         f'{WORLD_SIZE - MARGIN:.2f}')
+    return float(value)
 
 
 def _positive(value, font=None):
@@ -133,6 +156,13 @@ PARAMETERS = (
     Parameter('text', 'str', '', '', 'a word drawn once, as soon as the pose is known', _text),
     Parameter('pen', 'str', '179 184 255 3', 'px',
               "ink: r g b (0-255) and width; turtlesim's own pen by default", _pen),
+    Parameter('turtle', 'str', 'turtle1', '',
+              'the turtle to drive (spawned if it does not exist); /NAME for one outside '
+              "the controller's namespace", _turtle),
+    Parameter('x', 'float', '', 'm', 'where a spawned turtle starts; "": a free place', _place),
+    Parameter('y', 'float', '', 'm', 'where a spawned turtle starts; "": a free place', _place),
+    Parameter('parallel', 'bool', 'false', '',
+              'a word is drawn by one turtle per character, all at once', _boolean),
 )
 
 TABLE = {p.name: p for p in PARAMETERS}
@@ -174,6 +204,9 @@ class Settings:
         self.font = BUILTIN
         for p in PARAMETERS:      # ~font comes before what depends on it
             setattr(self, p.name, read_parameter(p.name, get, self.font))
+        if (self.x is None) != (self.y is None):
+            raise ParameterError(f'~x is {self.x!r} and ~y is {self.y!r}; '
+                                 'allowed: both numbers, or both "" for a free place')
 
 
 def _integer(value):

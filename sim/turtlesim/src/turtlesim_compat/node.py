@@ -16,9 +16,12 @@ pen it was requested under. Every change to the world happens under `_lock`.
 import os
 import queue
 import signal
+import socket
+import struct
 import sys
 import threading
 import time
+import warnings
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -32,6 +35,11 @@ from .world import CENTRE, DEFAULT_BACKGROUND, TICK_SECONDS, RequestError, World
 
 TICK_MS = int(TICK_SECONDS * 1000)
 CALL_TIMEOUT = 5.0   # s a service caller waits for a tick before giving up
+# Poses are written by the tick itself (no queue thread to wake per message
+# and subscriber: with 30 drawing turtles that wake-up was most of our CPU).
+# A subscriber that stops reading would then block the tick once its socket
+# buffer is full; after this long its connection is dropped instead.
+POSE_SEND_TIMEOUT = struct.pack('ll', 0, 20000)     # struct timeval: 20 ms
 
 
 class _Call:
@@ -51,11 +59,35 @@ class _Call:
         self.done.set()
 
 
+class _BoundedSend(rospy.SubscribeListener):
+    """Gives every subscriber connection of a synchronous publisher a send timeout."""
+
+    def __init__(self):
+        self.publisher = None
+
+    def peer_subscribe(self, topic_name, topic_publish, peer_publish):
+        for connection in self.publisher.impl.connections:
+            sock = getattr(connection, 'socket', None)
+            if sock is not None:
+                sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDTIMEO, POSE_SEND_TIMEOUT)
+
+
+def synchronous_publisher(name, data_class):
+    listener = _BoundedSend()
+    # queue_size=None: rospy writes in the caller's thread (and warns; the
+    # warning is about the blocking that _BoundedSend bounds).
+    with warnings.catch_warnings():
+        warnings.simplefilter('ignore', SyntaxWarning)
+        listener.publisher = rospy.Publisher(name, data_class, subscriber_listener=listener,
+                                             queue_size=None, tcp_nodelay=True)
+    return listener.publisher
+
+
 class TurtleEndpoints:
     """The topics and services of one turtle, named under its own namespace."""
 
     def __init__(self, node, name):
-        self.pose = rospy.Publisher(f'{name}/pose', Pose, queue_size=1)
+        self.pose = synchronous_publisher(f'{name}/pose', Pose)
         self.colour = rospy.Publisher(f'{name}/color_sensor', Color, queue_size=1)
         self.topics = [
             self.pose, self.colour,
@@ -129,6 +161,7 @@ class TurtlesimNode:
             while not self._calls.empty():
                 self._calls.get_nowait().run()
             now = time.monotonic()
+            drawn = []
             for name, turtle in self._world.turtles.items():
                 segments, clamped_from = turtle.step(now)
                 if clamped_from:
@@ -139,11 +172,12 @@ class TurtlesimNode:
                                             turtle.linear_speed, turtle.angular))
                 if endpoints.colour.get_num_connections():    # reading a pixel costs
                     endpoints.colour.publish(Color(*self._canvas.colour_at(turtle.x, turtle.y)))
-                if segments:
-                    self._canvas.draw(segments)
-                    self.changed = True
+                drawn += segments
                 if turtle.linear_speed or turtle.angular:
                     self.changed = True
+            if drawn:       # one painter for every turtle's lines
+                self._canvas.draw(drawn)
+                self.changed = True
 
     def frame(self):
         with self._lock:
