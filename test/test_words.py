@@ -16,34 +16,14 @@ from std_msgs.msg import String
 from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
-from support.accuracy import distance_to_polyline, touches_a_wall, vertex_errors
+from support.accuracy import (distance_to_polyline, expected, touches_a_wall, vertex_errors,
+                              worst_off)
 from support.nodes import LogWatch, PoseRecorder, wait_until
-from turtle_letters.font import BUILTIN
 from turtle_letters.hershey import load_font
-from turtle_letters.plan import Layout, Line, Pen, PlannedPose, plan_strokes, word_strokes
-from turtle_letters.route import order_strokes
+from turtle_letters.plan import Layout, PlannedPose
 
 VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
 BACKGROUND = (69, 86, 255)
-
-
-def expected(text, start, size, font, direction):
-    """Strokes and pen-up travel segments, by the package's own plan."""
-    places, _ = Layout((start.x, start.y), size, font).reserve(text)
-    strokes = word_strokes(text, places, size, font)
-    if font is not BUILTIN:
-        strokes = order_strokes(strokes, (start.x, start.y))
-    primitives, _ = plan_strokes(strokes, start, direction)
-    travel = []
-    pen_down, here = True, (start.x, start.y)
-    for p in primitives:
-        if isinstance(p, Pen):
-            pen_down = p.down
-        elif isinstance(p, Line):
-            if not pen_down:
-                travel.append([here, (p.x, p.y)])
-            here = (p.x, p.y)
-    return strokes, travel
 
 
 def pixel(image, x, y):
@@ -69,8 +49,9 @@ class Words(unittest.TestCase):
         pub = rospy.Publisher('/turtlebot_controller/text', String, queue_size=1, latch=True)
         pub.publish(String(text))
 
-        cls.strokes, cls.travel = expected(text, PlannedPose(first.x, first.y, first.theta), size,
-                                           font, direction)
+        start = PlannedPose(first.x, first.y, first.theta)
+        places, _ = Layout((start.x, start.y), size, font).reserve(text)
+        cls.strokes, cls.travel = expected(text, places, start, size, font, direction)
 
         def done():
             if logs.count('Refused', '/turtlebot_controller'):
@@ -87,8 +68,7 @@ class Words(unittest.TestCase):
         self.assertEqual(missed, [], 'vertices missed (m) by mm')
 
     def test_the_path_keeps_to_the_strokes_and_travel_moves(self):
-        allowed = self.strokes + self.travel
-        worst = max(min(distance_to_polyline(q, line) for line in allowed) for q in self.path)
+        worst = worst_off(self.path, self.strokes, self.travel)
         self.assertLess(worst, VERTEX_TOLERANCE, f'{worst * 1000:.2f} mm off the strokes')
         self.assertFalse(touches_a_wall(self.path))
         self.assertGreater(len(self.travel), 2, 'the word should need pen-up travel')

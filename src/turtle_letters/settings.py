@@ -47,6 +47,8 @@ def _characters(font):
 
 
 def _letter(value, font):
+    if isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= 9:
+        value = str(value)          # _letter:=7 on a command line comes as a number
     letter = _string(value) if font.case_sensitive else _string(value).upper()
     if len(letter) != 1 or font.glyph(letter) is None:
         raise ValueError(f'one of {"".join(sorted(font.glyphs))}')

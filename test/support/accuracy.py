@@ -2,7 +2,9 @@
 the tests and the benchmark both use it."""
 import math
 
-from turtle_letters.plan import WORLD_SIZE
+from turtle_letters.font import BUILTIN
+from turtle_letters.plan import WORLD_SIZE, Line, Pen, plan_strokes, word_strokes
+from turtle_letters.route import order_strokes
 
 # The lab's ideal N from the turtle's start pose (the lab's own figures).
 LAB_N_VERTICES = [(5.5444, 5.5444), (5.5444, 8.5444), (8.0193, 6.0696), (8.0193, 9.0696)]
@@ -31,3 +33,29 @@ def vertex_errors(path, vertices):
 
 def touches_a_wall(path, clearance=1e-6):
     return any(not (clearance < v < WORLD_SIZE - clearance) for p in path for v in p)
+
+
+def expected(text, places, start, size, font=BUILTIN, direction='ccw'):
+    """The strokes of `text` at `places` (from plan.Layout) and the pen-up
+    travel segments that reach them from the turtle's `start`, by the
+    package's own plan: what a drawing's path must keep to."""
+    strokes = word_strokes(text, places, size, font)
+    if font is not BUILTIN:
+        strokes = order_strokes(strokes, (start.x, start.y))
+    primitives, _ = plan_strokes(strokes, start, direction)
+    travel = []
+    pen_down, here = True, (start.x, start.y)
+    for p in primitives:
+        if isinstance(p, Pen):
+            pen_down = p.down
+        elif isinstance(p, Line):
+            if not pen_down:
+                travel.append([here, (p.x, p.y)])
+            here = (p.x, p.y)
+    return strokes, travel
+
+
+def worst_off(path, strokes, travel):
+    """How far the path strays from the strokes and travel segments, m."""
+    allowed = strokes + travel
+    return max(min(distance_to_polyline(q, line) for line in allowed) for q in path)

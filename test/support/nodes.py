@@ -144,16 +144,16 @@ class LogWatch:
 
 
 class PoseRecorder:
-    """Every pose of turtle1 with the time it came (and, if asked, whether
+    """Every pose of a turtle with the time it came (and, if asked, whether
     each cmd_vel moved the turtle)."""
 
-    def __init__(self, with_commands=False):
+    def __init__(self, with_commands=False, turtle='turtle1'):
         self.lock = threading.Lock()
         self.poses, self.commands = [], []
-        self._subscriber = rospy.Subscriber('/turtle1/pose', Pose, self._on_pose,
+        self._subscriber = rospy.Subscriber(f'/{turtle}/pose', Pose, self._on_pose,
                                             queue_size=10000, tcp_nodelay=True)
         if with_commands:
-            self._commands = rospy.Subscriber('/turtle1/cmd_vel', Twist, self._on_cmd_vel,
+            self._commands = rospy.Subscriber(f'/{turtle}/cmd_vel', Twist, self._on_cmd_vel,
                                               queue_size=10000, tcp_nodelay=True)
 
     def _on_pose(self, msg):
