@@ -1,6 +1,7 @@
 #!/bin/bash
-# `make test`: unit tests (pytest, no ROS), every rostest through catkin, then
-# the workspace tests (pytest, several catkin builds of their own); ends with
+# `make test`: unit tests (pytest, no ROS), every rostest through catkin, the
+# network tests (pytest, as root), then the workspace tests (pytest, several
+# catkin builds of their own); ends with
 # one line "N passed, N failed" counted over all of them.
 set -u
 source "$(dirname "$0")/env.sh"
@@ -27,6 +28,11 @@ catkin_test_results "$results" >"$WS/test_results.txt" 2>&1 || {
   cat "$WS/test_results.txt"
   echo "(the full rostest output is in $WS/run_tests.log)"
 }
+
+echo "== network tests: a classroom of machines made of network namespaces (root only)"
+mkdir -p "$results/network"
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
+  --junitxml="$results/network/pytest.xml" test/network) || status=1
 
 echo "== workspace tests: underlay, switching simulators, the README's recipe, install space"
 mkdir -p "$results/workspace"

@@ -10,7 +10,6 @@ the pose callback instead (as turtlesim's draw_square does) would need the
 sequence cut into states; the thread keeps it a plain sequence.
 """
 import math
-import os
 import sys
 import threading
 import time
@@ -25,6 +24,7 @@ from .claims import Claims
 from .driver import DrawingAborted, TurtleDriver
 from .drawing import LetterDrawer
 from .jobs import Jobs
+from .network import reach_advice
 from .motion import EXECUTORS, STOP, SmoothExecutor, StallWatch, TimedExecutor
 from .parts import free_place, letter_bounds, on_canvas, overlaps, part_box, text_width
 from .plan import DoesNotFit, Line, PlannedPose, Turn, wrap
@@ -37,6 +37,7 @@ THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
 PROGRESS_PERIOD = 5.0       # s between two progress lines of a drawing
 STALL_SECONDS = 1.0         # s a turtle may disobey before the drawing stops
 CONNECT_SECONDS = 5.0       # s a new turtle's topics may take to connect
+POSE_PATIENCE = 3.0         # s without a pose that turtlesim publishes: we cannot hear it
 CLAIM_SETTLE = 0.3          # s for controllers that chose at the same time to see each other
 CLAIM_ATTEMPTS = 20
 
@@ -151,6 +152,7 @@ class TurtleController(TurtleDrawer):
         width = text_width(s.text, s.font)
         # turtlesim offers spawn a moment before it has spawned turtle1
         if self.driver.exists(wait=0.5):
+            self.driver.listen()
             pose = self.driver.wait_for_pose(say=not waited)
             if s.x is not None:
                 rospy.logwarn('Turtle %s already exists: ~x and ~y are ignored; its first letter '
@@ -219,6 +221,7 @@ class TurtleController(TurtleDrawer):
         except rospy.ServiceException as e:
             raise Refused(f'turtlesim would not spawn {self.driver.name}: {e}') from None
         self.spawned = True
+        self.driver.listen()
         rospy.loginfo('Spawned turtle %s at x=%.2f y=%.2f, facing +x', self.driver.name, *place)
         if not self.driver.wait_connected(CONNECT_SECONDS):
             rospy.logwarn('%s', not_connected_diagnosis(self.driver))
@@ -309,7 +312,7 @@ class TurtleController(TurtleDrawer):
         """Draw `text` at the next free places on the canvas."""
         if self.spawned and not self.driver.exists():
             self._respawn()
-        pose = self.driver.wait_for_pose()
+        pose = self.driver.wait_for_pose(patience=POSE_PATIENCE)
         start = PlannedPose(pose.x, pose.y, pose.theta)
         places, must_clear = self.reserve(text, start)
         if self.settings.parallel and sum(p is not None for p in places) > 1:
@@ -366,6 +369,7 @@ class TurtleController(TurtleDrawer):
             driver.close()
             raise DrawingAborted(f'turtlesim would not spawn the spare turtle {driver.name}: '
                                  f'{e}') from None
+        driver.listen()
         spare = TurtleDrawer(self.settings, driver, label=f'{driver.name}: ')
         if not driver.wait_connected(CONNECT_SECONDS):
             spare.driver.stop()
@@ -420,17 +424,6 @@ def _quietly(call):
         pass
 
 
-def advertised():
-    """This node's URI, and which setting made its host name."""
-    if os.environ.get('ROS_IP'):
-        source = f'ROS_IP={os.environ["ROS_IP"]}'
-    elif os.environ.get('ROS_HOSTNAME'):
-        source = f'ROS_HOSTNAME={os.environ["ROS_HOSTNAME"]}'
-    else:
-        source = 'neither ROS_IP nor ROS_HOSTNAME is set, so it is the host name'
-    return f'{rospy.get_node_uri()} ({source})'
-
-
 def stall_diagnosis(driver, pose):
     """What was seen when a turtle did not move as commanded, and what to check."""
     linear_x, linear_y, angular = driver.commanded
@@ -442,19 +435,13 @@ def stall_diagnosis(driver, pose):
     if others:
         return f'{seen}; {", ".join(others)} publish there too: only one node may drive a turtle'
     if driver.cmd_vel_connections() == 0:
-        return f'{seen}; turtlesim has not connected to it. {_reach_advice()}'
+        return f'{seen}; turtlesim has not connected to it. {reach_advice()}'
     return f'{seen}; turtlesim hears it: check the remaps of cmd_vel and pose'
 
 
 def not_connected_diagnosis(driver):
     return (f'turtlesim has not connected to {driver.cmd_vel_topic} within {CONNECT_SECONDS:g} s, '
-            f'so turtle {driver.name} will not move. {_reach_advice()}')
-
-
-def _reach_advice():
-    return (f"Check that the simulator's host can resolve and reach this machine as it "
-            f'advertises itself, {advertised()}; set ROS_IP or ROS_HOSTNAME to an address it '
-            'can reach; rosrun turtle_letters check_network.py checks this machine')
+            f'so turtle {driver.name} will not move. {reach_advice()}')
 
 
 def _other_publishers(topic):

@@ -12,6 +12,8 @@ from std_srvs.srv import Empty
 from turtlesim.msg import Pose
 from turtlesim.srv import Kill, SetPen, Spawn
 
+from .network import reach_advice
+
 POSE_TIMEOUT = 1.0      # s without a pose: the simulator is gone
 POSES_KEPT = 1000       # 16 s of ticks: the drawing thread reads far faster
 # A command is sent when it changes, and repeated while it holds so that
@@ -49,13 +51,18 @@ class TurtleDriver:
         self._clear = rospy.ServiceProxy(simulator_service(turtle, 'clear'), Empty)
         self._spawn = rospy.ServiceProxy(simulator_service(turtle, 'spawn'), Spawn)
         self._kill = rospy.ServiceProxy(simulator_service(turtle, 'kill'), Kill)
-        self._pose_sub = rospy.Subscriber(f'{turtle}/pose', Pose, self._on_pose, queue_size=100,
-                                          tcp_nodelay=True)
+        self.pose_topic = rospy.resolve_name(f'{turtle}/pose')
+        self._pose_sub = None
         rospy.on_shutdown(self._on_shutdown)
 
-    @property
-    def pose_topic(self):
-        return self._pose_sub.resolved_name
+    def listen(self):
+        """Subscribe to the turtle's poses. Once it exists, if we spawn it:
+        then the master hands us turtlesim's publisher at once, instead of
+        calling this machine back later (which a machine the master cannot
+        reach would never hear)."""
+        if self._pose_sub is None:
+            self._pose_sub = rospy.Subscriber(self.pose_topic, Pose, self._on_pose,
+                                              queue_size=100, tcp_nodelay=True)
 
     @property
     def spawn_service(self):
@@ -74,14 +81,18 @@ class TurtleDriver:
             self._poses.get_nowait()
         self._poses.put_nowait(msg)
 
-    def wait_for_pose(self, say=True):
+    def wait_for_pose(self, say=True, patience=None):
         """The latest pose, once there is one; says once that it waits (if
-        `say`, and none came within a second)."""
+        `say`, and none came within a second). After `patience` s, if
+        turtlesim publishes the poses but none reach us, gives up."""
         waited = 0
         while self.latest_pose is None and not rospy.is_shutdown():
             if waited == 2 and say:
                 rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when '
                               'it comes', self.pose_topic)
+            if patience is not None and waited * 0.5 >= patience and self.exists():
+                raise DrawingAborted(f'no pose on {self.pose_topic} for {patience:g} s although '
+                                     f'turtlesim publishes it. {reach_advice()}')
             try:
                 self._poses.get(timeout=0.5)
             except queue.Empty:
@@ -150,17 +161,21 @@ class TurtleDriver:
         `timeout` s (a new turtle's topics take a moment to connect)."""
         deadline = time.monotonic() + timeout
         while not rospy.is_shutdown() and time.monotonic() < deadline:
-            if self._cmd_vel.get_num_connections() and self._pose_sub.get_num_connections():
+            if self._cmd_vel.get_num_connections() and self.poses_connected():
                 return True
             time.sleep(0.02)
         return False
+
+    def poses_connected(self):
+        return self._pose_sub is not None and self._pose_sub.get_num_connections() > 0
 
     def close(self):
         """Let go of the turtle's topics (a spare turtle, once killed)."""
         with self._publish_lock:
             self._stopping = True
         self._cmd_vel.unregister()
-        self._pose_sub.unregister()
+        if self._pose_sub is not None:
+            self._pose_sub.unregister()
 
     def forget_poses(self):
         """A new turtle of the same name: nothing of the old one counts."""
