@@ -54,8 +54,11 @@ def turn_between(heading: float, target: float, direction: str) -> float:
     lab's way, 0 to 2 pi) or the shorter way (-pi to pi)."""
     if direction == 'ccw':
         angle = (target - heading) % (2.0 * math.pi)
-        return 0.0 if math.isclose(angle, 2.0 * math.pi, abs_tol=ANGLE_TOLERANCE) else angle
-    return wrap(target - heading)
+        if angle < ANGLE_TOLERANCE or math.isclose(angle, 2.0 * math.pi, abs_tol=ANGLE_TOLERANCE):
+            return 0.0
+        return angle
+    angle = wrap(target - heading)
+    return 0.0 if abs(angle) < ANGLE_TOLERANCE else angle
 
 
 def path(points: List[Tuple[float, float]], start: PlannedPose, direction: str):

@@ -6,7 +6,7 @@ from typing import NamedTuple
 import pytest
 
 from turtle_letters.font import FONT, LAB_N
-from turtle_letters.motion import EXECUTORS, TimedExecutor
+from turtle_letters.motion import EXECUTORS, StallWatch, TimedExecutor
 from turtle_letters.plan import Line, PlannedPose, Turn, plan_glyph
 from turtlesim_compat.world import CENTRE, Turtle
 
@@ -199,3 +199,31 @@ def test_smooth_faces_along_the_edge_it_draws():
     turtle.step(now=1)
     assert turtle.theta == pytest.approx(math.pi / 2)
     assert (turtle.x, turtle.y) == pytest.approx((2.0, 2.016))
+
+
+def test_a_turtle_that_does_as_told_is_never_stalled():
+    watch = StallWatch(limit=1.0)
+    for tick in range(200):
+        command = (1.0, 0.0, 0.5 if tick % 2 else 0.25)
+        watch.sent(command)
+        # turtlesim reports the command of the tick before
+        pose = PoseMessage(0, 0, 0, 1.0, 0.25 if tick % 2 else 0.5)
+        assert not watch.stalled(pose, tick * 0.016)
+
+
+@pytest.mark.parametrize('reported', [(0.0, 0.0), (0.3, 0.0)])
+def test_a_turtle_that_does_not_do_as_told_is_stalled_after_the_limit(reported):
+    """Commands not delivered (it stands), or another node's (it moves otherwise)."""
+    watch = StallWatch(limit=1.0)
+    watch.sent((1.0, 0.0, 0.0))
+    pose = PoseMessage(0, 0, 0, *reported)
+    assert not watch.stalled(pose, 10.0)
+    assert not watch.stalled(pose, 10.9)
+    assert watch.stalled(pose, 11.0)
+
+
+def test_a_standing_order_is_not_disobeyed():
+    watch = StallWatch(limit=1.0)
+    watch.sent((0.0, 0.0, 0.0))
+    assert not watch.stalled(PoseMessage(0, 0, 0, 0.5, 0.0), 0.0)
+    assert not watch.stalled(PoseMessage(0, 0, 0, 0.5, 0.0), 5.0)

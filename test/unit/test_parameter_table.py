@@ -69,3 +69,19 @@ def test_launch_values_are_read_as_roslaunch_reads_them():
     assert launch_value('True', 'bool') is True
     assert launch_value('007', 'str') == '007'
     assert launch_value('big', 'float') == 'big'
+
+
+STUDENT = ET.parse(os.path.join(ROOT, 'launch', 'student.launch')).getroot()
+# A classroom's own defaults: the student's initial, small enough for a room.
+STUDENT_DEFAULTS = {'letter': "$(eval arg('name')[:1].upper())", 'size': '1.0'}
+
+
+@pytest.mark.parametrize('p', PARAMETERS, ids=lambda p: p.name)
+def test_student_launch_takes_every_argument_and_passes_it_on(p):
+    passed = {a.get('name'): a.get('value') for a in STUDENT.find('include').findall('arg')}
+    declared = {a.get('name'): a.get('default') for a in STUDENT.findall('arg')}
+    if p.name == 'turtle':          # the student's name is the turtle's
+        assert passed['turtle'] == '/$(arg name)'
+        return
+    assert passed[p.name] == f'$(arg {p.name})'
+    assert declared[p.name] == STUDENT_DEFAULTS.get(p.name, p.default)

@@ -58,3 +58,10 @@ def test_text_that_cannot_fit_is_refused_saying_how_much_fits():
 def test_a_letter_too_big_for_the_canvas_is_refused():
     with pytest.raises(DoesNotFit, match='at most 0'):
         Layout((1.0, 1.0), 9.0).reserve('N')
+
+
+@pytest.mark.parametrize('off', [-3e-6, 3e-6])
+def test_a_heading_a_float32_hair_off_is_no_turn(off):
+    """A pose read as float32 is microradians off the plan: no full turn for that."""
+    assert turn_between(off, 0.0, 'ccw') == 0.0
+    assert turn_between(0.0, off, 'ccw') == 0.0

@@ -68,3 +68,27 @@ def test_a_quoted_value_reads_back_as_what_was_typed():
     for typed in ['?', "it's", '{a', '[1,', '~', ': x']:
         argument = quote_unreadable([f'_text:={typed}'])[0]
         assert yaml.safe_load(argument.partition(':=')[2]) == typed
+
+
+@pytest.mark.parametrize('name', ['turtle1', '/alice', 'class/bob_2'])
+def test_a_turtle_is_a_ros_name(name):
+    assert settings(turtle=name).turtle == name
+
+
+@pytest.mark.parametrize('name', ['', '1st', 'al ice', 'alice/', '/', 'a-b', 7])
+def test_a_turtle_name_turtlesim_could_not_take_is_refused(name):
+    with pytest.raises(ParameterError, match='~turtle '):
+        settings(turtle=name)
+
+
+def test_a_place_is_both_coordinates_or_neither():
+    assert (settings().x, settings().y) == (None, None)
+    assert (settings(x=2, y=3.5).x, settings(x=2, y=3.5).y) == (2.0, 3.5)
+    with pytest.raises(ParameterError, match='both'):
+        settings(x=2.0)
+    with pytest.raises(ParameterError, match='~y '):
+        settings(x=2.0, y=11.0)
+
+
+def test_a_digit_given_as_a_number_is_that_digit():
+    assert settings(letter=7).letter == '7'
