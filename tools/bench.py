@@ -8,7 +8,11 @@ machine and with every core busy, several times each. Writes a table to the term
 bench-results/bench.json (every figure, the machine, the simulator) and
 bench-results/bench.png (ideal strokes and recorded paths, corners enlarged).
 
+A classroom group (tools/bench_classroom.py) draws the N with 1, 10 and 30
+turtles at once, and a parallel word against its slowest letter alone.
+
 Usage: bench.py [--reps N] [--letter N] [--modes timed,timed-wall,feedback] [--loads idle,loaded]
+                [--classroom 1,10,30] [--parallel-word yes|no]
 """
 import argparse
 import json
@@ -37,6 +41,7 @@ from support.accuracy import distance_to_polyline, vertex_errors  # noqa: E402
 from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # noqa: E402
                            wait_until)
 from support.procstat import cpu_seconds, rss_mb  # noqa: E402
+from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
     'vertex_max_mm': {('timed', 'idle'): 8.0, ('timed', 'loaded'): 10.0,
@@ -301,6 +306,7 @@ def table(results, sim):
             lines.append(label + ''.join(cells))
     lines.extend(clock_ratios(results))
     lines.extend(word_lines(results))
+    lines.extend(classroom_lines(results))
     sim_f = results['simulator_figures']
     idle, ten = sim_f['idle'], sim_f['ten_moving']
 
@@ -334,6 +340,9 @@ def main():
     parser.add_argument('--words', default=','.join(WORD_FONTS),
                         help=f'fonts to draw {WORD!r} in, smooth mode ("" for none)')
     parser.add_argument('--loads', default='idle,loaded')
+    parser.add_argument('--classroom', default='1,10,30',
+                        help='how many turtles draw the N at once, per run ("" for none)')
+    parser.add_argument('--parallel-word', default='yes', choices=('yes', 'no'))
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
@@ -357,10 +366,17 @@ def main():
               flush=True)
         results = {'simulator_figures': simulator_figures(processes, sim.pid, recorder),
                    'groups': []}
+        for turtles in filter(None, args.classroom.split(',')):
+            print(f'bench: classroom, {turtles} turtles at once...', flush=True)
+            results.setdefault('classroom', []).append(
+                classroom_run(processes, sim.pid, int(turtles)))
+        if args.parallel_word == 'yes':
+            print('bench: a parallel word, and its slowest letter alone...', flush=True)
+            results['parallel_word'] = parallel_word_run(processes)
         for load in args.loads.split(','):
             if load == 'loaded':
                 loads.append(Load(processes, limit=3600))
-            for mode in args.modes.split(','):
+            for mode in filter(None, args.modes.split(',')):
                 runs = []
                 for rep in range(args.reps):
                     print(f'bench: {mode} {load} run {rep + 1}/{args.reps}...', flush=True)

@@ -167,6 +167,9 @@ class PoseRecorder:
     def wait_connected(self, timeout=30):
         wait_for_connections(self._subscriber, timeout, "turtlesim's poses")
 
+    def unregister(self):
+        self._subscriber.unregister()
+
     def reset(self):
         with self.lock:
             self.poses, self.commands = [], []
