@@ -14,7 +14,8 @@ from typing import List, NamedTuple
 
 from .font import BUILTIN
 from .settings import DEFAULT_PEN
-from .plan import Layout, Line, Pen, PlannedPose, Turn, plan_strokes, word_strokes
+from .plan import (SAME_POINT, Layout, Line, Pen, PlannedPose, Turn, plan_strokes,
+                   word_strokes)
 from .route import ink_length, order_strokes, travel_length
 
 
@@ -86,7 +87,7 @@ class LetterDrawer:
         if self.settings.mode == 'smooth':
             here = plan.start
             for stroke in plan.strokes:
-                if math.hypot(stroke[0][0] - here[0], stroke[0][1] - here[1]) > 1e-9:
+                if math.hypot(stroke[0][0] - here[0], stroke[0][1] - here[1]) > SAME_POINT:
                     self.pen(False)
                     self.glide(stroke[:1])
                     self.pen(True)

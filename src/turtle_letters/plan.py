@@ -16,6 +16,7 @@ TURN_DIRECTIONS = ('ccw', 'shortest')
 # Poses come as float32: a heading read from one may be a few microradians
 # off the plan's, and that must not make a full turn of an almost-zero one.
 ANGLE_TOLERANCE = 1e-5      # rad
+SAME_POINT = 1e-5           # m: a float32 pose is up to a micrometre off the point it stands on
 
 
 class Turn(NamedTuple):
@@ -67,7 +68,7 @@ def path(points: List[Tuple[float, float]], start: PlannedPose, direction: str):
     x, y, heading = start
     for px, py in points:
         length = math.hypot(px - x, py - y)
-        if length < 1e-9:
+        if length < SAME_POINT:
             continue
         target = math.atan2(py - y, px - x)
         angle = turn_between(heading, target, direction)
@@ -96,7 +97,7 @@ def plan_strokes(strokes, start: PlannedPose, direction: str = 'ccw'):
     primitives = []
     pose = start
     for stroke in strokes:
-        if math.hypot(stroke[0][0] - pose.x, stroke[0][1] - pose.y) > 1e-9:
+        if math.hypot(stroke[0][0] - pose.x, stroke[0][1] - pose.y) > SAME_POINT:
             travel, pose = path(stroke[:1], pose, direction)
             primitives += [Pen(False)] + travel + [Pen(True)]
         drawn, pose = path(stroke[1:], pose, direction)

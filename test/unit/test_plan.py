@@ -65,3 +65,12 @@ def test_a_heading_a_float32_hair_off_is_no_turn(off):
     """A pose read as float32 is microradians off the plan: no full turn for that."""
     assert turn_between(off, 0.0, 'ccw') == 0.0
     assert turn_between(0.0, off, 'ccw') == 0.0
+
+
+def test_a_turtle_a_float32_hair_from_the_first_point_draws_the_lab_n_as_is():
+    """A spawned turtle stands on its letter's place as float32 allows."""
+    hair = 9.388888888888889 - 9.38888931274414
+    primitives, _ = plan_glyph(FONT['N'], (0.5, 9.388888888888889), 1.0,
+                               PlannedPose(0.5, 9.388888888888889 - hair, 0.0))
+    assert Pen(False) not in primitives
+    assert [round(math.degrees(p.angle)) for p in primitives if isinstance(p, Turn)] == [90, 225, 135]
