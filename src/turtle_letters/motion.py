@@ -10,7 +10,9 @@ and answers with the command for the next tick, or None when it is done.
   and position is never looked at. On the simulator's clock (the default)
   elapsed time is counted from the velocities the pose reports the simulator
   used, and the last tick gets the fraction of the speed that completes the
-  amount: exact on any machine. On the wall clock, as the lab's
+  amount: exact on any machine. A tick that went too far because a command
+  came late (a busy machine, a network) is taken back: the turtle backs up,
+  or turns back, along its own line. On the wall clock, as the lab's
   rospy.Time.now() loop does, it commands the speed until amount / speed
   seconds have passed; a busy machine slows the simulator's ticks, so the
   turtle then comes up short.
@@ -26,6 +28,8 @@ from typing import Callable, NamedTuple, Optional
 from .plan import Turn, wrap
 
 SIM_TICK = 0.016            # turtlesim's fixed step, seconds
+SETTLED = 1e-5              # m or rad: a timed primitive is done this close to its amount
+SETTLE_TICKS = 4            # a timed primitive's way back is spread over this many ticks
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex
 HEADING_TOLERANCE = 1e-4    # rad
 
@@ -58,14 +62,25 @@ class TimedExecutor:
         self.now = now
         self.elapsed_amount = 0.0
         self.started_at = None
+        # Sim clock: the way the turtle is told to go now (+1 along the
+        # primitive, -1 back), whether it is told to stand, and the speed
+        # cap of this round (the first at full speed; see update()).
+        self.way = 1.0
+        self.stopping = False
+        self.cap = self.speed
 
     def _command(self) -> Optional[Command]:
-        remaining = self.amount - self.elapsed_amount
+        remaining = (self.amount - self.elapsed_amount) * self.way
         if remaining <= 1e-9:
-            return None
-        speed = self.sign * self.speed
-        if self.clock == 'sim':
-            speed = self.sign * min(self.speed, remaining / SIM_TICK)
+            if self.clock == 'wall':
+                return None
+            self.stopping = True
+            return STOP
+        if self.clock == 'wall':
+            speed = self.speed
+        else:
+            speed = self.way * min(self.cap, remaining / SIM_TICK)
+        speed *= self.sign
         return Command(angular=speed) if self.turning else Command(linear_x=speed)
 
     def start(self, pose) -> Optional[Command]:
@@ -74,11 +89,26 @@ class TimedExecutor:
         return self._command()
 
     def update(self, pose) -> Optional[Command]:
-        if self.clock == 'sim':
-            used = pose.angular_velocity if self.turning else pose.linear_velocity
-            self.elapsed_amount += abs(used) * SIM_TICK
-        else:
+        """On the sim clock, a primitive ends when a pose shows the turtle
+        standing and the amount used is right. A command that came a tick
+        late makes it go too far: then it goes back the difference, spread
+        over SETTLE_TICKS ticks so that a late stop costs a quarter of it,
+        and so on until it is right. (A pose's linear velocity has no sign;
+        between two stops every command goes the same way.)"""
+        if self.clock == 'wall':
             self.elapsed_amount = self.speed * (self.now() - self.started_at)
+            return self._command()
+        used = abs(pose.angular_velocity if self.turning else pose.linear_velocity)
+        self.elapsed_amount += self.way * used * SIM_TICK
+        if self.stopping:
+            if used:
+                return STOP                      # the stop has not come yet
+            error = self.amount - self.elapsed_amount
+            if abs(error) <= SETTLED:
+                return None
+            self.way = 1.0 if error > 0 else -1.0
+            self.cap = min(self.speed, abs(error) / (SETTLE_TICKS * SIM_TICK))
+            self.stopping = False
         return self._command()
 
 
