@@ -88,6 +88,7 @@ class TurtleEndpoints:
 
     def __init__(self, node, name):
         self.pose = synchronous_publisher(f'{name}/pose', Pose)
+        self.pose_msg = Pose()      # filled in and sent every tick (sent at once, so reusable)
         self.colour = rospy.Publisher(f'{name}/color_sensor', Color, queue_size=1)
         self.topics = [
             self.pose, self.colour,
@@ -168,8 +169,10 @@ class TurtlesimNode:
                     rospy.logwarn('Oh no! I hit the wall! (Clamping from [x=%f, y=%f])',
                                   *clamped_from)
                 endpoints = self._endpoints[name]
-                endpoints.pose.publish(Pose(turtle.x, turtle.y, turtle.theta,
-                                            turtle.linear_speed, turtle.angular))
+                msg = endpoints.pose_msg
+                msg.x, msg.y, msg.theta = turtle.x, turtle.y, turtle.theta
+                msg.linear_velocity, msg.angular_velocity = turtle.linear_speed, turtle.angular
+                endpoints.pose.publish(msg)
                 if endpoints.colour.get_num_connections():    # reading a pixel costs
                     endpoints.colour.publish(Color(*self._canvas.colour_at(turtle.x, turtle.y)))
                 drawn += segments
