@@ -15,8 +15,8 @@ from std_msgs.msg import String
 from turtlesim.msg import Pose
 
 from support.accuracy import LAB_N_VERTICES
-from support.nodes import (LogWatch, NodeProcess, PoseRecorder, node_pid, simulator, subscribed,
-                           wait_for_connections, wait_until)
+from support.nodes import (LogWatch, NodeProcess, PoseRecorder, connections, node_pid, simulator,
+                           subscribed, wait_for_connections, wait_until)
 from support.procstat import cpu_seconds, rss_mb
 
 # Feedback mode at higher speeds draws the N in seconds; the timing of the
@@ -63,8 +63,11 @@ class Faults(unittest.TestCase):
         return pid[0]
 
     def wait_for_chatter_subscriber(self, with_poses=True):
-        """The controller hears /chatter (and, if asked, has turtlesim's poses)."""
+        """The controller hears /chatter (and, if asked, has turtlesim's poses),
+        and its log lines reach us (else the first of them are lost)."""
         wait_for_connections(self.chatter, what='the controller on /chatter')
+        wait_until(lambda: connections(CONTROLLER, '/rosout', 'o', rospy.get_name()), 20,
+                   "the controller's log lines on /rosout reaching this test")
         if with_poses:
             wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 20,
                        "the controller's pose subscription")

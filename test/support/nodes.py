@@ -34,15 +34,17 @@ def wait_for_connections(endpoint, timeout=20, what=None):
                what or f'a connection on {endpoint.resolved_name}')
 
 
-def connections(node, topic, direction):
+def connections(node, topic, direction, peer=None):
     """How many live connections `node` has on `topic`, incoming ('i') or
-    outgoing ('o'), asked of the node itself over its XML-RPC API."""
+    outgoing ('o'), with `peer` only if given, asked of the node itself over
+    its XML-RPC API."""
     try:
         uri = rosgraph.Master(rospy.get_name()).lookupNode(node)
         _, _, bus = xmlrpc.client.ServerProxy(uri).getBusInfo(rospy.get_name())
     except Exception:
         return 0
-    return sum(1 for c in bus if c[2] == direction and c[4] == topic and c[5])
+    return sum(1 for c in bus if c[2] == direction and c[4] == topic and c[5]
+               and peer in (None, c[1]))
 
 
 def subscribed(node, topic):
