@@ -10,12 +10,12 @@ import rosgraph
 import rosgraph.names
 import rospy
 
-from .driver import simulator_service
+from .driver import beside
 
 
 class Claims:
     def __init__(self, turtle, name):
-        self.root = simulator_service(turtle, 'turtle_letters/parts')
+        self.root = beside(turtle, 'turtle_letters/parts')
         self.key = rosgraph.names.ns_join(self.root, name)
         self.name = name
         self._master = rosgraph.Master(rospy.get_name())

@@ -16,12 +16,11 @@ import time
 import traceback
 
 import rosgraph
-import rosgraph.names
 import rospy
 from std_msgs.msg import String
 
 from .claims import Claims
-from .driver import DrawingAborted, TurtleDriver
+from .driver import DrawingAborted, TurtleDriver, beside
 from .drawing import LetterDrawer
 from .jobs import Jobs
 from .network import reach_advice
@@ -359,10 +358,7 @@ class TurtleController(TurtleDrawer):
                       _pose_text(self.driver.latest_pose))
 
     def _spare_turtle(self, number, place):
-        graph_name = rosgraph.names.ns_join(
-            rosgraph.names.namespace(rospy.resolve_name(self.settings.turtle)),
-            f'{self.driver.name}_{number}')
-        driver = TurtleDriver(graph_name)
+        driver = TurtleDriver(beside(self.settings.turtle, f'{self.driver.name}_{number}'))
         try:
             driver.spawn(place[0], place[1], 0.0)
         except rospy.ServiceException as e:

@@ -26,10 +26,10 @@ class DrawingAborted(RuntimeError):
     pass
 
 
-def simulator_service(turtle, service):
-    """turtlesim's own services (spawn, kill, clear) sit beside its turtles:
-    in the namespace that holds the turtle's name."""
-    return rosgraph.names.ns_join(rosgraph.names.namespace(rospy.resolve_name(turtle)), service)
+def beside(turtle, name):
+    """`name` in the namespace that holds the turtle's name: where turtlesim
+    has its own services (spawn, kill, clear) and its other turtles."""
+    return rosgraph.names.ns_join(rosgraph.names.namespace(rospy.resolve_name(turtle)), name)
 
 
 class TurtleDriver:
@@ -48,9 +48,9 @@ class TurtleDriver:
         self._stopping = False                 # once set, only the stop goes out
         self._cmd_vel = rospy.Publisher(f'{turtle}/cmd_vel', Twist, queue_size=10)
         self._set_pen = rospy.ServiceProxy(f'{turtle}/set_pen', SetPen)
-        self._clear = rospy.ServiceProxy(simulator_service(turtle, 'clear'), Empty)
-        self._spawn = rospy.ServiceProxy(simulator_service(turtle, 'spawn'), Spawn)
-        self._kill = rospy.ServiceProxy(simulator_service(turtle, 'kill'), Kill)
+        self._clear = rospy.ServiceProxy(beside(turtle, 'clear'), Empty)
+        self._spawn = rospy.ServiceProxy(beside(turtle, 'spawn'), Spawn)
+        self._kill = rospy.ServiceProxy(beside(turtle, 'kill'), Kill)
         self.pose_topic = rospy.resolve_name(f'{turtle}/pose')
         self._pose_sub = None
         rospy.on_shutdown(self._on_shutdown)
