@@ -283,7 +283,10 @@ class Faults(unittest.TestCase):
         self.start(simulator())
         ctl = self.start(controller(*FAST, '_text:=HI', '_size:=1.5'))
         self.logs.wait_for("Done drawing 'HI'", 120, CONTROLLER, explain=ctl.output)
-        self.assertEqual(self.logs.count("Drawing 'HI'", CONTROLLER), 1)
+        # The drawing starts with the node, maybe before its /rosout reaches
+        # us: count in its own output, complete once it has stopped.
+        ctl.stop()
+        self.assertEqual(ctl.output().count("Drawing 'HI'"), 1, ctl.output())
         self.assert_no_traceback(ctl)
 
 
