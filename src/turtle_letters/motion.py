@@ -32,6 +32,7 @@ SETTLED = 1e-5              # m or rad: a timed primitive is done this close to 
 SETTLE_TICKS = 4            # a timed primitive's way back is spread over this many ticks
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex
 HEADING_TOLERANCE = 1e-4    # rad
+TURN_PER_TICK = 0.1         # rad: smooth mode turns at most 6.25 rad/s
 
 
 class Command(NamedTuple):
@@ -156,12 +157,19 @@ class SmoothExecutor:
 
     Turtlesim turns first and then moves along the NEW heading, with
     linear.x ahead and linear.y to the left, so a command can move the turtle
-    by any displacement in one tick while it turns to any heading: the turtle
-    faces along the edge it draws, as a pen would. Each tick's move is a
-    straight line, so a tick that would pass a vertex is cut short to land on
-    it exactly: every move lies on one edge, and the drawn line is the stroke.
-    Closed loop: every move is worked out from the pose just read, and a
-    vertex counts as reached only when a pose shows the turtle on it.
+    by any displacement in one tick, whatever way it faces. Each tick's move
+    is a straight line, so a tick that would pass a vertex is cut short to
+    land on it exactly: every move lies on one edge, and the drawn line is the
+    stroke. Closed loop: every move is worked out from the pose just read, and
+    a vertex counts as reached only when a pose shows the turtle on it.
+
+    Meanwhile the turtle turns to face along the edge, by at most TURN_PER_TICK
+    a tick. A command that comes late (a busy machine) finds turtlesim using
+    the one before once more: the turtle runs on one tick along its line, at
+    most a tick's move (linear_speed x 16 ms) past a vertex. A turn used twice
+    would also bend the next move off the line, by as much as that turn: hence
+    small turns. Nothing else is given up to lateness, since slowing down
+    before each vertex to make up for it would cost more time than it saves.
     """
 
     def __init__(self, points, linear_speed: float, angular_speed: float = 0.0) -> None:
@@ -184,12 +192,11 @@ class SmoothExecutor:
         distance = math.hypot(dx, dy)
         if distance > self.step:                    # not this tick: go on along the edge
             dx, dy = dx * self.step / distance, dy * self.step / distance
-        heading = math.atan2(vy - y, vx - x)
-        angular = wrap(heading - pose.theta) / SIM_TICK
-        new_theta = pose.theta + angular * SIM_TICK   # the heading turtlesim moves along
+        turn = _clamp(wrap(math.atan2(vy - y, vx - x) - pose.theta), TURN_PER_TICK)
+        new_theta = pose.theta + turn               # the heading turtlesim moves along
         cos_t, sin_t = math.cos(new_theta), math.sin(new_theta)
         return Command((cos_t * dx + sin_t * dy) / SIM_TICK, (-sin_t * dx + cos_t * dy) / SIM_TICK,
-                       angular)
+                       turn / SIM_TICK)
 
 
 class StallWatch:

@@ -55,7 +55,12 @@ def expected(text, places, start, size, font=BUILTIN, direction='ccw'):
     return strokes, travel
 
 
+def distances_off(path, strokes, travel):
+    """How far each point of the path is from the strokes and travel segments, m."""
+    allowed = strokes + travel
+    return [min(distance_to_polyline(q, line) for line in allowed) for q in path]
+
+
 def worst_off(path, strokes, travel):
     """How far the path strays from the strokes and travel segments, m."""
-    allowed = strokes + travel
-    return max(min(distance_to_polyline(q, line) for line in allowed) for q in path)
+    return max(distances_off(path, strokes, travel))
