@@ -52,7 +52,7 @@ class DrawLetter(unittest.TestCase):
     def test_1_p_draws_the_labs_n_and_a_second_p_meanwhile_changes_nothing(self):
         poses = self.draw_and_record(timeout=150, trigger_again_mid_drawing=True)
         self.check_n(poses, LAB_N_VERTICES)
-        self.assertEqual(self.logs.count('ignored: a drawing is under way'), 1)
+        self.assertEqual(self.logs.count('ignored: a drawing is waiting or under way'), 1)
         self.assertEqual(self.logs.count("Drawing 'N'"), 1)
         self.assertEqual(self.logs.count('hit the wall'), 0)
 

@@ -258,10 +258,10 @@ class TurtleController(TurtleDrawer):
         self.request(text, '~text')
 
     def request(self, text, source):
-        """Draw `text` unless a drawing is under way (then it is ignored, not queued)."""
+        """Draw `text` unless a drawing is waiting or under way (then it is ignored, not queued)."""
         if not self.jobs.offer(text):
-            rospy.loginfo_throttle(IGNORED_LOG_PERIOD, '%s ignored: a drawing is under way'
-                                   + THROTTLED, source)
+            rospy.loginfo_throttle(IGNORED_LOG_PERIOD, '%s ignored: a drawing is waiting or '
+                                   'under way' + THROTTLED, source)
 
     def type_key(self, char):
         """Typing mode: like a typewriter, keys typed ahead wait their turn."""
