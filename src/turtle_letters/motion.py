@@ -33,6 +33,7 @@ SETTLE_TICKS = 4            # a timed primitive's way back is spread over this m
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex
 HEADING_TOLERANCE = 1e-4    # rad
 TURN_PER_TICK = 0.1         # rad: smooth mode turns at most 6.25 rad/s
+ON_COURSE = 1e-5            # rad: smooth mode holds its command while it faces the vertex this closely
 
 
 class Command(NamedTuple):
@@ -190,9 +191,13 @@ class SmoothExecutor:
         vx, vy = self.points[self.next]
         dx, dy = vx - x, vy - y
         distance = math.hypot(dx, dy)
+        turn = _clamp(wrap(math.atan2(vy - y, vx - x) - pose.theta), TURN_PER_TICK)
+        if distance > self.step and abs(turn) < ON_COURSE:
+            # Straight at the vertex: the same command each tick, which the
+            # driver need not send again (a long edge costs a few messages).
+            return Command(self.step / SIM_TICK, 0.0, 0.0)
         if distance > self.step:                    # not this tick: go on along the edge
             dx, dy = dx * self.step / distance, dy * self.step / distance
-        turn = _clamp(wrap(math.atan2(vy - y, vx - x) - pose.theta), TURN_PER_TICK)
         new_theta = pose.theta + turn               # the heading turtlesim moves along
         cos_t, sin_t = math.cos(new_theta), math.sin(new_theta)
         return Command((cos_t * dx + sin_t * dy) / SIM_TICK, (-sin_t * dx + cos_t * dy) / SIM_TICK,

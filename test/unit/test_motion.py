@@ -202,6 +202,24 @@ def test_smooth_traces_the_labs_n_on_its_strokes_in_ink_length_over_speed():
     assert all(math.hypot(b[0] - a[0], b[1] - a[1]) <= 0.016 + 1e-6 for a, b in zip(track, track[1:]))
 
 
+def test_smooth_holds_one_command_along_a_straight_edge():
+    """The driver sends a command only when it changes: a long edge should
+    not need one message a tick."""
+    from turtle_letters.motion import SmoothExecutor
+    stroke = [(CENTRE + 3 * x, CENTRE + 3 * y) for x, y in LAB_N.strokes[0]]
+    turtle = Turtle('t', CENTRE, CENTRE, math.pi / 2)
+    executor = SmoothExecutor(stroke[1:], 1.0)
+    commands = [executor.start(sample(turtle))]
+    while commands[-1] is not None:
+        turtle.command(*commands[-1], now=len(commands))
+        turtle.step(now=len(commands))
+        commands.append(executor.update(sample(turtle)))
+    changes = sum(a != b for a, b in zip(commands, commands[1:]))
+    assert len(commands) > 590
+    # turning at the two corners changes it on about 50 ticks; little else does
+    assert changes < 100, changes
+
+
 def test_smooth_turns_to_face_along_the_edge_a_little_each_tick():
     from turtle_letters.motion import TURN_PER_TICK, SmoothExecutor
     turtle = Turtle('t', 2.0, 2.0, 0.0)
