@@ -32,7 +32,7 @@ SETTLED = 1e-5              # m or rad: a timed primitive is done this close to 
 SETTLE_TICKS = 4            # a timed primitive's way back is spread over this many ticks
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex
 HEADING_TOLERANCE = 1e-4    # rad
-TURN_PER_TICK = 0.1         # rad: smooth mode turns at most 6.25 rad/s
+TURN_PER_TICK = 0.05        # rad: smooth mode turns at most 3.1 rad/s
 ON_COURSE = 1e-5            # rad: smooth mode holds its command while it faces the vertex this closely
 
 
