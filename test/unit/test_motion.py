@@ -239,38 +239,50 @@ def test_smooth_turns_to_face_along_the_edge_a_little_each_tick():
     assert headings[-1] == pytest.approx(math.pi / 2)
 
 
+class LateLink:
+    """Commands on their way to the simulator, each arriving a number of ticks
+    late drawn from `delays`, in the order sent: the simulator uses the newest
+    that has come, so a late command means the one before once more, and a
+    command overtaken by the next one is never used."""
+
+    def __init__(self, delays, seed):
+        self.delays = delays
+        self.rng = random.Random(seed)
+        self.arrivals = []          # (tick it arrives, command), in the order sent
+
+    def send(self, command, tick):
+        last = self.arrivals[-1][0] if self.arrivals else 0
+        self.arrivals.append((max(last, tick + self.rng.choice(self.delays)), command))
+
+    def deliver(self, turtle, tick, now):
+        """Hand the turtle what has arrived by `tick`."""
+        while self.arrivals and self.arrivals[0][0] <= tick:
+            turtle.command(*self.arrivals.pop(0)[1], now=now)
+
+
 def trace_with_late_commands(strokes, speed, delays, seed):
-    """Smooth mode through `strokes`, each command arriving a number of ticks
-    late drawn from `delays` (in the order sent: the simulator uses the newest
-    that has come, so a late command means the one before once more). The
-    worst distance of any tick's position from the stroke or travel line it
-    is on, m."""
+    """Smooth mode through `strokes` over a LateLink. The worst distance of
+    any tick's position from the stroke or travel line it is on, m."""
     from support.accuracy import distance_to_polyline
     from turtle_letters.motion import SmoothExecutor
-    rng = random.Random(seed)
+    link = LateLink(delays, seed)
     turtle = Turtle('t', *strokes[0][0], 0.0)
-    worst, tick, arrivals = 0.0, 0, []
+    worst, tick = 0.0, 0
     here = strokes[0][0]
-
-    def send(command):
-        last = arrivals[-1][0] if arrivals else 0
-        arrivals.append((max(last, tick + rng.choice(delays)), command))
-
     for stroke in strokes:
         for points, line in (([stroke[0]], [here, stroke[0]]), (stroke[1:], stroke)):
             executor = SmoothExecutor(points, speed)
             command = executor.start(sample(turtle))
             while command is not None:
-                send(command)
-                while arrivals and arrivals[0][0] <= tick:
-                    turtle.command(*arrivals.pop(0)[1], now=tick)
+                link.send(command, tick)
+                link.deliver(turtle, tick, now=tick)
                 turtle.step(now=tick)
                 tick += 1
                 if line[0] != line[-1]:
                     worst = max(worst, distance_to_polyline((turtle.x, turtle.y), line))
                 command = executor.update(sample(turtle))
                 assert tick < 100000, 'the stroke never ended'
-            send((0.0, 0.0, 0.0))
+            link.send((0.0, 0.0, 0.0), tick)
         here = stroke[-1]
     return worst
 
@@ -333,20 +345,17 @@ def test_a_standing_order_is_not_disobeyed():
 def test_timed_commands_that_come_irregularly_late_still_end_on_every_vertex(seed):
     """Commands 0 to 3 ticks late, at random (a loaded machine): some are used
     twice, some never; every vertex of the N is still reached."""
-    rng = random.Random(seed)
+    link = LateLink([0, 0, 1, 2, 3], seed)
     turtle = Turtle('t', CENTRE, CENTRE, 0.0)
     primitives = n_at_centre()
     track = []
-    arrivals = []               # (tick it arrives, command), in the order sent
     tick = 0
     for primitive in primitives:
         executor = TimedExecutor(primitive, 1.0, 0.25, 'sim')
         command = executor.start(sample(turtle))
         while command is not None:
-            last = arrivals[-1][0] if arrivals else 0
-            arrivals.append((max(last, tick + rng.choice([0, 0, 1, 2, 3])), command))
-            while arrivals and arrivals[0][0] <= tick:
-                turtle.command(*arrivals.pop(0)[1], now=tick * 0.016)
+            link.send(command, tick)
+            link.deliver(turtle, tick, now=tick * 0.016)
             turtle.step(now=tick * 0.016)
             tick += 1
             track.append((turtle.x, turtle.y))
