@@ -2,15 +2,24 @@
 parameter server, the one store every machine of a ROS system shares.
 
 Each controller writes `<turtlesim's namespace>/turtle_letters/parts/<turtle>`
-= {'node': its node name, 'box': [x0, y0, x1, y1]}. A part whose node is no
-longer known to the master is free again, so a controller that died does not
-keep its place.
+= {'node': its name, 'uri': its XML-RPC URI, 'box': [x0, y0, x1, y1],
+'place': [x, y] (the part's first place), 'spawned': whether the controller
+spawned the turtle, 'cursor': [x, y] (where its next letter goes)}.
+
+A part is live while the node at its URI answers (liveness.py): a crashed
+controller's part is free again within a second, and a controller that
+restarts under the same turtle name finds its part, its turtle and its
+cursor where it left them. The URI, not the name, says whose a claim is, so
+a node that the master shut down for a newcomer of its name cannot take the
+newcomer's claim with it.
 """
-import rosgraph
+from concurrent.futures import ThreadPoolExecutor
+
 import rosgraph.names
 import rospy
 
 from .driver import beside
+from .liveness import answers
 
 
 class Claims:
@@ -18,41 +27,70 @@ class Claims:
         self.root = beside(turtle, 'turtle_letters/parts')
         self.key = rosgraph.names.ns_join(self.root, name)
         self.name = name
-        self._master = rosgraph.Master(rospy.get_name())
 
-    def others(self):
-        """{turtle: box} of the live parts other than ours."""
+    def all(self):
+        """{turtle: claim} as stored, live or not."""
         try:
             parts = rospy.get_param(self.root, {})
         except KeyError:
             return {}
-        live = {}
-        for name, part in parts.items() if isinstance(parts, dict) else ():
-            if name != self.name and self._alive(part):
-                live[name] = tuple(part['box'])
-        return live
+        return {n: p for n, p in parts.items() if _well_formed(p)} if isinstance(parts, dict) \
+            else {}
 
-    def holder(self):
-        """The live node other than this one that claims our turtle, if any."""
-        part = rospy.get_param(self.key, None)
-        if part and part.get('node') != rospy.get_name() and self._alive(part):
-            return part['node']
-        return None
+    def others(self):
+        """{turtle: box} of the live parts other than ours."""
+        parts = {n: p for n, p in self.all().items() if n != self.name}
+        with ThreadPoolExecutor(max_workers=max(1, min(16, len(parts)))) as pool:
+            alive = dict(zip(parts, pool.map(lambda p: answers(p.get('uri')) is not None,
+                                            parts.values())))
+        return {n: tuple(p['box']) for n, p in parts.items() if alive[n]}
 
-    def claim(self, box):
-        rospy.set_param(self.key, {'node': rospy.get_name(), 'box': [float(v) for v in box]})
+    def left_behind(self):
+        """Our turtle's claim if a controller that is no longer alive left it (we
+        take its part over), or None. Raises Held if a live one has it."""
+        part = self.all().get(self.name)
+        if part is None or part.get('uri') == _own_uri() or 'place' not in part:
+            return None
+        if answers(part.get('uri')) is not None:
+            raise Held(part['node'])
+        return part
+
+    def claim(self, box, place, spawned, whole_canvas=False, cursor=None):
+        part = {'node': rospy.get_name(), 'uri': _own_uri(), 'box': [float(v) for v in box],
+                'place': [float(v) for v in place], 'spawned': bool(spawned),
+                'whole_canvas': bool(whole_canvas)}
+        if cursor is not None:
+            part['cursor'] = [float(v) for v in cursor]
+        rospy.set_param(self.key, part)
+
+    def mark(self, **fields):
+        """Change fields of our claim (the cursor, say), if it is still ours."""
+        if self.ours():
+            rospy.set_param(self.key, dict(rospy.get_param(self.key), **fields))
+
+    def ours(self):
+        try:
+            return rospy.get_param(self.key, {}).get('uri') == _own_uri()
+        except (KeyError, OSError, rospy.ROSException, AttributeError):
+            return False
 
     def release(self):
         """Give the part back, unless someone else has claimed it since."""
         try:
-            if rospy.get_param(self.key, {}).get('node') == rospy.get_name():
+            if self.ours():
                 rospy.delete_param(self.key)
         except (KeyError, OSError, rospy.ROSException):
             pass
 
-    def _alive(self, part):
-        try:
-            self._master.lookupNode(part['node'])
-            return True
-        except (rosgraph.MasterError, KeyError, TypeError):
-            return False
+
+class Held(RuntimeError):
+    """A live controller has this turtle already."""
+
+
+def _own_uri():
+    return rospy.get_node_uri()
+
+
+def _well_formed(part):
+    return (isinstance(part, dict) and isinstance(part.get('box'), list)
+            and len(part['box']) == 4)

@@ -10,6 +10,7 @@ the pose callback instead (as turtlesim's draw_square does) would need the
 sequence cut into states; the thread keeps it a plain sequence.
 """
 import math
+import re
 import sys
 import threading
 import time
@@ -19,14 +20,15 @@ import rosgraph
 import rospy
 from std_msgs.msg import String
 
-from .claims import Claims
+from .claims import Claims, Held
 from .driver import DrawingAborted, TurtleDriver, beside
 from .drawing import LetterDrawer
-from .jobs import Jobs
+from .jobs import TYPED_AHEAD, Jobs
+from .liveness import refuse_a_second
 from .network import reach_advice
 from .motion import EXECUTORS, STOP, SmoothExecutor, StallWatch, TimedExecutor
-from .parts import free_place, letter_bounds, on_canvas, overlaps, part_box, text_width
-from .plan import DoesNotFit, Line, PlannedPose, Turn, wrap
+from .parts import fits_a_line, free_place, letter_bounds, on_canvas, overlaps, part_box, text_width
+from .plan import DoesNotFit, Line, PlannedPose, Turn, shown, wrap
 from .settings import ParameterError, Settings, quote_unreadable
 
 # Ignored messages can come at any rate (the tutorial talker sends "hello
@@ -128,10 +130,11 @@ class TurtleController(TurtleDrawer):
         self.jobs = Jobs()
         self.claims = Claims(settings.turtle, self.driver.name)
         self.spawned = False            # we spawned our turtle: we kill it when we go
+        self._spares = []               # a parallel word's spare turtles, while they live
         self._placed = threading.Event()
         self._started = self._last_progress = 0.0
         rospy.on_shutdown(self._leave)
-        rospy.Subscriber('chatter', String, self._on_chatter, queue_size=10)
+        rospy.Subscriber('chatter', String, self._on_chatter, queue_size=TYPED_AHEAD)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
         self._worker = threading.Thread(target=self._work, name='drawing', daemon=True)
         self._worker.start()
@@ -141,31 +144,71 @@ class TurtleController(TurtleDrawer):
     # -- the turtle and its place ---------------------------------------------
     def take_place(self):
         """Find our turtle, or spawn it at a place of its own; then drawings
-        may start. Raises Refused with the reason."""
+        may start. A part our name left behind (a crash) is taken back with
+        its turtle and where its letters had got to. Raises Refused."""
         waited = self._wait_for_simulator()
-        holder = self.claims.holder()
-        if holder:
-            raise Refused(f'turtle {self.driver.name} is already driven by {holder}; '
-                          'give another name (turtle:= or name:=)')
+        try:
+            left = self.claims.left_behind()
+        except Held as e:
+            raise Refused(f'turtle {self.driver.name} is already driven by {e}, which is alive; '
+                          'give another name (turtle:= or name:=)') from None
+        self._remove_spares_left_behind()
+        exists = self.driver.exists(wait=0.5)   # turtlesim offers spawn a moment before turtle1
+        if exists and (left is None or left['whole_canvas']):
+            self._adopt_for_the_lab(say_wait=not waited)
+        else:
+            self._take_a_part(left, exists)
+        self._placed.set()
+
+    def _adopt_for_the_lab(self, say_wait):
+        """The lab: the whole canvas from where the turtle stands. Its first
+        letter's place is claimed so that no one spawns there."""
+        s = self.settings
+        self.driver.listen()
+        pose = self.driver.wait_for_pose(say=say_wait)
+        if s.x is not None:
+            rospy.logwarn('Turtle %s already exists: ~x and ~y are ignored; its first letter '
+                          'starts where it stands', self.driver.name)
+        place = (pose.x, pose.y)
+        self.claims.claim(part_box(place, s.font.widest, s.size, s.font), place, spawned=False,
+                          whole_canvas=True)
+
+    def _take_a_part(self, left, exists):
+        """A part of our own: the one our name left behind if it is still
+        free, else a new one; our turtle is spawned there (or kept there)."""
         s = self.settings
         width = text_width(s.text, s.font)
-        # turtlesim offers spawn a moment before it has spawned turtle1
-        if self.driver.exists(wait=0.5):
+        if not fits_a_line(width, s.size, s.font):
+            raise Refused(f'~text {shown(s.text)} ({len(s.text)} characters) is wider than the '
+                          f'canvas at size {s.size:g} m; give a shorter text or a smaller size:=')
+        place, box = self._claim_a_part(width, left)
+        spawned = bool(left and left.get('spawned'))
+        back = left is not None and list(place) == list(left['place'])
+        if exists and not back:
+            if not spawned:
+                raise Refused(f'turtle {self.driver.name} stands in a part that is no longer free, '
+                              'and it is not ours to move; give another name')
+            _call_briefly(self.driver.kill)     # ours, in a part now someone else's
+            exists = False
+        cursor = left.get('cursor') if back else None
+        self.claims.claim(box, place, spawned=spawned or not exists, cursor=cursor)
+        if exists:
+            self.spawned = spawned
             self.driver.listen()
-            pose = self.driver.wait_for_pose(say=not waited)
-            if s.x is not None:
-                rospy.logwarn('Turtle %s already exists: ~x and ~y are ignored; its first letter '
-                              'starts where it stands', self.driver.name)
-            # The lab: the whole canvas from where the turtle stands. Its
-            # first letter's place is claimed so that no one spawns there.
-            self.claims.claim(part_box((pose.x, pose.y), s.font.widest, s.size, s.font))
+            self.driver.wait_for_pose()
         else:
-            place, box = self._claim_a_part(width)
             self._spawn(place)
-            self.part = (place, letter_bounds(box, s.size, s.font))
-            rospy.loginfo('Turtle %s has the part x %.2f-%.2f, y %.2f-%.2f of the canvas',
-                          self.driver.name, *box[0::2], *box[1::2])
-        self._placed.set()
+        self.part = (place, letter_bounds(box, s.size, s.font))
+        if cursor:
+            self.resume_at = tuple(cursor)
+        rospy.loginfo('Turtle %s %s the part x %.2f-%.2f, y %.2f-%.2f of the canvas',
+                      self.driver.name, 'takes back' if back else 'has', *box[0::2], *box[1::2])
+
+    def _remove_spares_left_behind(self):
+        """Spare turtles of a parallel word that a crash of ours left on the canvas."""
+        for spare in spares_on_canvas(self.driver, self.claims):
+            rospy.loginfo('Removing %s, a spare turtle left behind by an earlier run', spare)
+            _call_briefly(lambda n=spare: self.driver.kill_named(n))
 
     def _wait_for_simulator(self):
         """Whether we had to wait (and said so)."""
@@ -179,13 +222,17 @@ class TurtleController(TurtleDrawer):
             rospy.wait_for_service(spawn)
             return True
 
-    def _claim_a_part(self, width):
-        """A part no live controller has, claimed; controllers that chose the
-        same place at the same moment settle it by name (the first stays)."""
+    def _claim_a_part(self, width, left=None):
+        """A part no live controller has, claimed: the part our name `left`
+        behind if it is still free, else at ~x, ~y, else the first free one.
+        Controllers that chose the same place at the same moment settle it by
+        name (the first stays)."""
         s = self.settings
         for _ in range(CLAIM_ATTEMPTS):
             taken = self.claims.others()
-            if s.x is not None:
+            if left is not None and not any(overlaps(left['box'], b) for b in taken.values()):
+                place, box = tuple(left['place']), tuple(left['box'])
+            elif s.x is not None:
                 place = (s.x, s.y)
                 box = part_box(place, width, s.size, s.font)
                 if not on_canvas(box, s.size, s.font):
@@ -202,13 +249,14 @@ class TurtleController(TurtleDrawer):
             if crossed:
                 raise Refused(f'~x {s.x:g}, ~y {s.y:g}: the part there would cross that of '
                               f'{", ".join(crossed)}; choose another place or give none')
-            self.claims.claim(box)
+            self.claims.claim(box, place, spawned=False)
             time.sleep(CLAIM_SETTLE)
             rivals = [n for n, b in self.claims.others().items()
                       if overlaps(box, b) and n < self.driver.name]
             if not rivals:
                 return place, box
             self.claims.release()
+            left = None
             if s.x is not None:
                 raise Refused(f'~x {s.x:g}, ~y {s.y:g}: {rivals[0]} has just claimed a part '
                               'there; choose another place or give none')
@@ -218,7 +266,7 @@ class TurtleController(TurtleDrawer):
         try:
             self.driver.spawn(place[0], place[1], 0.0)
         except rospy.ServiceException as e:
-            raise Refused(f'turtlesim would not spawn {self.driver.name}: {e}') from None
+            raise Refused(spawn_refusal(self.driver, e)) from None
         self.spawned = True
         self.driver.listen()
         rospy.loginfo('Spawned turtle %s at x=%.2f y=%.2f, facing +x', self.driver.name, *place)
@@ -226,33 +274,38 @@ class TurtleController(TurtleDrawer):
             rospy.logwarn('%s', not_connected_diagnosis(self.driver))
 
     def _leave(self):
-        """On shutdown: give the part back, and the turtle if we spawned it."""
+        """On shutdown (Ctrl-C, SIGTERM, the master's word): give the part
+        back, and the turtles we spawned, unless a newcomer of our name has
+        taken them over."""
+        ours = self.claims.ours()
         self.claims.release()
-        if self.spawned:
+        if self.spawned and ours:
             _call_briefly(self.driver.kill)
+        for spare in list(self._spares):
+            _remove_spare(spare)
 
     # -- requests --------------------------------------------------------------
     def _on_chatter(self, msg):
         data = msg.data
-        shown = repr(data if len(data) <= 40 else data[:40] + '...')
+        said = shown(data)
         if self.settings.typing:
             font = self.settings.font
             if data == ' ' or (len(data) == 1 and font.glyph(data) is not None):
                 self.type_key(data if font.case_sensitive else data.upper())
             else:
                 rospy.loginfo_throttle(IGNORED_LOG_PERIOD, 'chatter %s ignored: typing mode draws '
-                                       'single letters or digits' + THROTTLED, shown)
+                                       'single letters or digits' + THROTTLED, said)
         elif data == self.settings.trigger:
-            self.request(self.settings.letter, f'trigger {shown}')
+            self.request(self.settings.letter, f'trigger {said}')
         else:
             rospy.loginfo_throttle(IGNORED_LOG_PERIOD, 'chatter %s ignored: the trigger is %r'
-                                   + THROTTLED, shown, self.settings.trigger)
+                                   + THROTTLED, said, self.settings.trigger)
 
     def _on_text(self, msg):
         font = self.settings.font
         text = msg.data if font.case_sensitive else msg.data.upper()
         if not text.strip() or font.undrawable(text):
-            rospy.logwarn('~text %r refused: font %s has no glyph for %s', msg.data[:40],
+            rospy.logwarn('~text %s refused: font %s has no glyph for %s', shown(msg.data),
                           font.name, font.undrawable(text)[:10] or 'a blank text')
             return
         self.request(text, '~text')
@@ -314,6 +367,8 @@ class TurtleController(TurtleDrawer):
         pose = self.driver.wait_for_pose(patience=POSE_PATIENCE)
         start = PlannedPose(pose.x, pose.y, pose.theta)
         places, must_clear = self.reserve(text, start)
+        if self.part is not None:   # a restart of ours carries on from here
+            self.claims.mark(cursor=[float(v) for v in self.cursor])
         if self.settings.parallel and sum(p is not None for p in places) > 1:
             self._draw_parallel(text, places, must_clear, start)
             return
@@ -339,7 +394,7 @@ class TurtleController(TurtleDrawer):
                       self.settings.mode)
         if must_clear:
             self.clear()
-        spares = []
+        spares = self._spares
         try:
             for number, (char, place) in enumerate(chars[1:], 2):
                 spares.append(self._spare_turtle(number, place))
@@ -350,10 +405,8 @@ class TurtleController(TurtleDrawer):
             if errors:
                 raise errors[0]
         finally:
-            for spare in spares:
-                spare.driver.stop()
-                _call_briefly(spare.driver.kill)
-                spare.driver.close()
+            while spares:
+                _remove_spare(spares.pop())
         rospy.loginfo('Done drawing %r; the turtle is at %s', text,
                       _pose_text(self.driver.latest_pose))
 
@@ -363,14 +416,11 @@ class TurtleController(TurtleDrawer):
             driver.spawn(place[0], place[1], 0.0)
         except rospy.ServiceException as e:
             driver.close()
-            raise DrawingAborted(f'turtlesim would not spawn the spare turtle {driver.name}: '
-                                 f'{e}') from None
+            raise DrawingAborted(spawn_refusal(driver, e, 'the spare turtle ')) from None
         driver.listen()
         spare = TurtleDrawer(self.settings, driver, label=f'{driver.name}: ')
         if not driver.wait_connected(CONNECT_SECONDS):
-            spare.driver.stop()
-            _call_briefly(driver.kill)
-            driver.close()
+            _remove_spare(spare)
             raise DrawingAborted(not_connected_diagnosis(driver))
         return spare
 
@@ -387,6 +437,34 @@ class TurtleController(TurtleDrawer):
             cause = f'{type(error).__name__}: {error}'
             rospy.logdebug('Drawing of %r failed:\n%s', text, traceback.format_exc())
         rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text, cause)
+
+
+def _remove_spare(spare):
+    """A spare turtle stops, leaves the canvas, and lets go of its topics."""
+    spare.driver.stop()
+    _call_briefly(spare.driver.kill)
+    spare.driver.close()
+
+
+def spares_on_canvas(driver, claims):
+    """Turtles named like our parallel words' spares (NAME_2, NAME_3...) that
+    no live controller claims: an earlier run of ours left them."""
+    prefix = beside(driver.turtle, driver.name + '_')
+    pattern = re.compile(re.escape(prefix) + r'([0-9]+)/pose$')
+    try:
+        topics = rosgraph.Master(rospy.get_name()).getPublishedTopics('')
+    except Exception:  # the master is gone: nothing to tidy
+        return []
+    spares = {f'{driver.name}_{m.group(1)}' for t, _ in topics for m in [pattern.match(t)] if m}
+    return sorted(spares - set(claims.others()))
+
+
+def spawn_refusal(driver, error, what=''):
+    """Why turtlesim would not spawn a turtle, in words (the real one says b'')."""
+    if driver.exists():
+        return (f'turtlesim would not spawn {what}{driver.name}: a turtle of that name is '
+                'on the canvas already')
+    return f'turtlesim would not spawn {what}{driver.name}: {error}'
 
 
 def _all_at_once(calls):
@@ -461,6 +539,7 @@ def _pose_text(pose):
 
 
 def main():
+    refuse_a_second('turtlebot_controller')
     rospy.init_node('turtlebot_controller', argv=quote_unreadable(sys.argv))
     try:
         settings = Settings(rospy.get_param)

@@ -34,6 +34,7 @@ class LetterDrawer:
         # On a shared canvas, (first place, bounds) of this turtle's part
         # (see parts.py); None: the whole canvas, from where the turtle stands.
         self.part = None
+        self.resume_at = None   # where a restarted controller's next letter goes in its part
         self._layout = None
         # turtlesim's pen starts down in its default colour: a call is needed
         # only for another colour, or when the pen may have been left up
@@ -41,7 +42,9 @@ class LetterDrawer:
 
     def forget_layout(self):
         """After a failed drawing: the next one starts a new layout where the
-        turtle then is, and puts the pen down first."""
+        turtle then is (in a part: at the part's next place, past what the
+        failed one reserved), and puts the pen down first."""
+        self.resume_at = self.cursor if self.part is not None else None
         self._layout = None
         self._pen_ready = False
 
@@ -54,7 +57,14 @@ class LetterDrawer:
                 self._layout = Layout((where.x, where.y), s.size, s.font)
             else:
                 self._layout = Layout(self.part[0], s.size, s.font, bounds=self.part[1])
+                if self.resume_at is not None:
+                    self._layout.cursor = self.resume_at
         return self._layout.reserve(text)
+
+    @property
+    def cursor(self):
+        """Where the next letter goes, once a drawing has been laid out."""
+        return self._layout.cursor if self._layout is not None else self.resume_at
 
     def plan(self, text, places, start: PlannedPose) -> Plan:
         """The strokes of `text` at `places` and the primitives that draw them

@@ -156,6 +156,10 @@ class TurtleDriver:
     def kill(self):
         self._kill(self.name)
 
+    def kill_named(self, name):
+        """Kill another turtle of the same turtlesim."""
+        self._kill(name)
+
     def wait_connected(self, timeout):
         """Whether turtlesim hears our cmd_vel and we hear its poses within
         `timeout` s (a new turtle's topics take a moment to connect)."""

@@ -68,6 +68,12 @@ def free_place(width: float, size: float, font: Font,
     return None
 
 
+def fits_a_line(width: float, size: float, font: Font) -> bool:
+    """Whether one line of `width` letter heights fits the canvas at all."""
+    first = (MARGIN + font.overhang * size, WORLD_SIZE - MARGIN - font.ascent * size)
+    return on_canvas(part_box(first, width, size, font), size, font)
+
+
 def letter_bounds(box: Box, size: float, font: Font) -> Box:
     """Where the letters of a part may go: the part without its room."""
     room = font.letter_spacing * size / 2

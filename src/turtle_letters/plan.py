@@ -42,6 +42,11 @@ class PlannedPose(NamedTuple):
     heading: float
 
 
+def shown(text: str, limit: int = 40) -> str:
+    """`text` quoted for a log line: at most `limit` characters of it."""
+    return repr(text if len(text) <= limit else text[:limit] + '...')
+
+
 class DoesNotFit(ValueError):
     """The request would take the turtle outside the canvas' margins."""
 
@@ -167,24 +172,23 @@ class Layout:
                 and low_y <= y - self.font.descent * self.size + slack
                 and y + self.font.ascent * self.size <= high_y + slack)
 
-    def places(self, widths: List[float], cursor: Tuple[float, float]):
-        """Where boxes of these widths go from `cursor`, or None once the canvas is full."""
+    def places(self, widths: List[float], cursor: Tuple[float, float], partial=False):
+        """Where boxes of these widths go from `cursor`, or None once the
+        canvas is full (with `partial`, the places of those that fit). Stops
+        at the first that does not fit: the work is bounded by the canvas."""
         x, y = cursor
         placed = []
         for width in widths:
             if not self.fits_at(x, y, width):
                 x, y = self.left, y - self.font.line_height * self.size
                 if not self.fits_at(x, y, width):
-                    return None, cursor
+                    return (placed if partial else None), cursor
             placed.append((x, y))
             x += (width + self.font.letter_spacing) * self.size
         return placed, (x, y)
 
     def how_many_fit(self, widths: List[float]) -> int:
-        for n in range(len(widths), 0, -1):
-            if self.places(widths[:n], self.first_place)[0] is not None:
-                return n
-        return 0
+        return len(self.places(widths, self.first_place, partial=True)[0])
 
     def reserve(self, text: str):
         """Places for every character of `text` (None for a space) and
@@ -199,7 +203,7 @@ class Layout:
             if placed is None:
                 where = 'on the canvas' if self.bounds is None else "in the turtle's part of the canvas"
                 raise DoesNotFit(
-                    f'"{text}" does not fit {where} at size {self.size:g} m: '
+                    f'{shown(text)} does not fit {where} at size {self.size:g} m: '
                     f'at most {self.how_many_fit(widths)} of its {len(text)} characters fit')
         self.cursor = cursor
         return [None if c == ' ' else p for c, p in zip(text, placed)], cleared

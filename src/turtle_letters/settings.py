@@ -74,6 +74,23 @@ def _turtle(value, font=None):
     return value
 
 
+STUDENT_NAME = re.compile(r'[A-Za-z][A-Za-z0-9_]*')
+
+
+def student_name_problem(name, read_as='str'):
+    """What is wrong with student.launch's name:= (None when nothing is):
+    it names the turtle and the namespace, so it is one ROS base name, and
+    turtlesim's spawn lives at the root beside it. `read_as`: the type
+    roslaunch gave the value."""
+    if read_as != 'str':
+        return (f'roslaunch reads it as a {read_as}, not a name; '
+                'give a name that starts with a letter')
+    if not STUDENT_NAME.fullmatch(name):
+        return ('a name is letters (a-z, A-Z), digits and _, starting with a letter, '
+                'with no / or accents (the turtle and the namespace are named after it)')
+    return None
+
+
 def _place(value, font=None):
     if value == '':
         return None

@@ -17,7 +17,9 @@ import tty
 import rospy
 from std_msgs.msg import String
 
+from .jobs import TYPED_AHEAD
 from .keys import ESCAPE_WAIT, KeyDecoder, message_for
+from .liveness import refuse_a_second
 from .settings import ParameterError, quote_unreadable, read_parameter
 
 WAKE_UP = 0.5   # s: how often a blocked wait looks whether ROS shut the node down
@@ -84,7 +86,7 @@ class Talker(rospy.SubscribeListener):
         self._lock = threading.Lock()
         self._pending = []
         self._dropping = False
-        self._publisher = rospy.Publisher('chatter', String, queue_size=10,
+        self._publisher = rospy.Publisher('chatter', String, queue_size=TYPED_AHEAD,
                                           subscriber_listener=self)
 
     def press(self, key):
@@ -151,6 +153,7 @@ def read_terminal(talker, fd, prompt, signals):
 
 
 def main():
+    refuse_a_second('talker')
     rospy.init_node('talker', argv=quote_unreadable(sys.argv), disable_signals=True)
     signals = SignalPipe()
     try:
