@@ -39,7 +39,6 @@ PROGRESS_PERIOD = 5.0       # s between two progress lines of a drawing
 STALL_SECONDS = 1.0         # s a turtle may disobey before the drawing stops
 CONNECT_SECONDS = 5.0       # s a new turtle's topics may take to connect
 POSE_PATIENCE = 3.0         # s without a pose that turtlesim publishes: we cannot hear it
-CLAIM_SETTLE = 0.3          # s for controllers that chose at the same time to see each other
 CLAIM_ATTEMPTS = 20
 
 
@@ -225,8 +224,8 @@ class TurtleController(TurtleDrawer):
     def _claim_a_part(self, width, left=None):
         """A part no live controller has, claimed: the part our name `left`
         behind if it is still free, else at ~x, ~y, else the first free one.
-        Controllers that chose the same place at the same moment settle it by
-        name (the first stays)."""
+        Of controllers that want one place at once, one gets it (claims.take);
+        the others look again."""
         s = self.settings
         for _ in range(CLAIM_ATTEMPTS):
             taken = self.claims.others()
@@ -249,13 +248,9 @@ class TurtleController(TurtleDrawer):
             if crossed:
                 raise Refused(f'~x {s.x:g}, ~y {s.y:g}: the part there would cross that of '
                               f'{", ".join(crossed)}; choose another place or give none')
-            self.claims.claim(box, place, spawned=False)
-            time.sleep(CLAIM_SETTLE)
-            rivals = [n for n, b in self.claims.others().items()
-                      if overlaps(box, b) and n < self.driver.name]
+            rivals = self.claims.take(box, place)
             if not rivals:
                 return place, box
-            self.claims.release()
             left = None
             if s.x is not None:
                 raise Refused(f'~x {s.x:g}, ~y {s.y:g}: {rivals[0]} has just claimed a part '

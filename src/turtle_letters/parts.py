@@ -32,6 +32,15 @@ def part_box(first_place: Tuple[float, float], width: float, size: float, font: 
             x + width * size + reach + room, y + font.ascent * size + room)
 
 
+def contenders(parts: dict, turtle: str, uri: str, box: Box) -> dict:
+    """The claims among {turtle: claim} that stand in the way of `turtle`'s
+    controller at `uri` taking `box`, if their controllers are alive: another
+    turtle's part that crosses it, or our turtle's part held by another node."""
+    return {name: part for name, part in parts.items()
+            if (name == turtle and part.get('uri') != uri)
+            or (name != turtle and overlaps(box, part['box']))}
+
+
 def overlaps(a: Box, b: Box) -> bool:
     return a[0] < b[2] - 1e-9 and b[0] < a[2] - 1e-9 and a[1] < b[3] - 1e-9 and b[1] < a[3] - 1e-9
 

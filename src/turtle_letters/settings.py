@@ -83,7 +83,8 @@ def student_name_problem(name, read_as='str'):
     turtlesim's spawn lives at the root beside it. `read_as`: the type
     roslaunch gave the value."""
     if read_as != 'str':
-        return (f'roslaunch reads it as a {read_as}, not a name; '
+        kind = {'bool': 'a boolean', 'int': 'a number', 'float': 'a number'}.get(read_as, read_as)
+        return (f'roslaunch reads it as {kind}, not a name; '
                 'give a name that starts with a letter')
     if not STUDENT_NAME.fullmatch(name):
         return ('a name is letters (a-z, A-Z), digits and _, starting with a letter, '

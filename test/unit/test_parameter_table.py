@@ -73,7 +73,7 @@ def test_launch_values_are_read_as_roslaunch_reads_them():
 
 STUDENT = ET.parse(os.path.join(ROOT, 'launch', 'student.launch')).getroot()
 # A classroom's own defaults: the student's initial, small enough for a room.
-STUDENT_DEFAULTS = {'letter': "$(eval arg('name')[:1].upper())", 'size': '1.0'}
+STUDENT_DEFAULTS = {'letter': "$(eval str(arg('name'))[:1].upper())", 'size': '1.0'}
 
 
 @pytest.mark.parametrize('p', PARAMETERS, ids=lambda p: p.name)

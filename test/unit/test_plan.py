@@ -74,3 +74,23 @@ def test_a_turtle_a_float32_hair_from_the_first_point_draws_the_lab_n_as_is():
                                PlannedPose(0.5, 9.388888888888889 - hair, 0.0))
     assert Pen(False) not in primitives
     assert [round(math.degrees(p.angle)) for p in primitives if isinstance(p, Turn)] == [90, 225, 135]
+
+
+def test_a_text_far_too_long_is_refused_and_quoted_short():
+    text = 'N' * 1_000_000
+    with pytest.raises(DoesNotFit) as refused:
+        Layout((5.544445, 5.544445), 3.0).reserve(text)
+    message = str(refused.value)
+    assert "'" + 'N' * 40 + "...'" in message and 'N' * 41 not in message
+    assert 'at most 4 of its 1000000 characters fit' in message
+
+
+def test_fitting_reads_no_further_than_the_canvas_holds():
+    read = []
+
+    def widths():       # a quadratic fit read the text once per character
+        for _ in range(100_000):
+            read.append(1)
+            yield FONT['N'].width
+    assert Layout((5.544445, 5.544445), 3.0).how_many_fit(widths()) == 4
+    assert len(read) == 5

@@ -1,7 +1,8 @@
 """The controller's parameters: defaults, and one clear refusal per bad value."""
 import pytest
 
-from turtle_letters.settings import ParameterError, Settings, quote_unreadable
+from turtle_letters.settings import (ParameterError, Settings, quote_unreadable,
+                                     student_name_problem)
 
 
 def settings(**given):
@@ -92,3 +93,21 @@ def test_a_place_is_both_coordinates_or_neither():
 
 def test_a_digit_given_as_a_number_is_that_digit():
     assert settings(letter=7).letter == '7'
+
+
+@pytest.mark.parametrize('name, read_as, wanted', [
+    ('alice', 'str', None),
+    ('Bob_2', 'str', None),
+    ('true', 'bool', 'roslaunch reads it as a boolean'),
+    ('7', 'int', 'roslaunch reads it as a number'),
+    ('élodie', 'str', 'no / or accents'),
+    ('lab/alice', 'str', 'no / or accents'),
+    ('2pac', 'str', 'starting with a letter'),
+    ('', 'str', 'starting with a letter'),
+])
+def test_student_names_are_one_ros_base_name(name, read_as, wanted):
+    problem = student_name_problem(name, read_as)
+    if wanted is None:
+        assert problem is None
+    else:
+        assert wanted in problem
