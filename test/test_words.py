@@ -5,8 +5,6 @@ and the pen-up travel moves, every vertex reached, the ink in the pen's
 colour and none on the travel moves. Configured by the <test>'s parameters:
 ~text, ~size, ~pen, and ~font, ~turn_direction as given to the launch file."""
 import math
-import os
-import tempfile
 import unittest
 
 import rospy
@@ -91,10 +89,9 @@ class Words(unittest.TestCase):
             rospy.wait_for_service('/turtlesim/save_canvas', timeout=5)
         except rospy.ROSException:
             self.skipTest('the real turtlesim cannot save its canvas')
-        path_png = os.path.join(tempfile.mkdtemp(), 'word.png')
-        rospy.set_param('/turtlesim/canvas_png', path_png)
-        self.assertTrue(rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)().success)
-        image = QImage(path_png)
+        saved = rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)()
+        self.assertTrue(saved.success, saved.message)
+        image = QImage(saved.message)
         turtle = self.path[-1]          # its icon covers the ink under it
         for a, b in self.travel:
             for i in range(1, 20):

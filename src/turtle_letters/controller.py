@@ -248,7 +248,10 @@ class TurtleController(TurtleDrawer):
             if crossed:
                 raise Refused(f'~x {s.x:g}, ~y {s.y:g}: the part there would cross that of '
                               f'{", ".join(crossed)}; choose another place or give none')
-            rivals = self.claims.take(box, place)
+            try:
+                rivals = self.claims.take(box, place)
+            except rospy.ServiceException as e:
+                raise Refused(f'the room would not grant a part: {e}') from None
             if not rivals:
                 return place, box
             left = None

@@ -21,15 +21,15 @@ class Room:
     def __init__(self):
         self.root = rospy.resolve_name('turtle_letters/parts')
         self._lock = threading.Lock()
-        self._master = rosgraph.Master(rospy.get_name())
         rospy.Service('turtle_letters/claim_part', ClaimPart, self.on_claim)
 
     def on_claim(self, request):
         """Granted unless a live part of another turtle (or a live controller
         of this turtle other than the caller) crosses the box."""
         caller = request._connection_header['callerid']
-        uri = self._master.lookupNode(caller)
         with self._lock:
+            # one request at a time, and one master proxy per request (they are not thread-safe)
+            uri = rosgraph.Master(rospy.get_name()).lookupNode(caller)
             parts = stored_parts(self.root)
             crossed = sorted(live(contenders(parts, request.turtle, uri, request.box)))
             if crossed:

@@ -2,10 +2,14 @@
 """The running bundled simulator, through its real topics and services."""
 import math
 import os
+import socket
+import struct
 import tempfile
 import time
 import unittest
+import xmlrpc.client
 
+import rosgraph
 import rospy
 import rostest
 from geometry_msgs.msg import Twist
@@ -190,11 +194,18 @@ class TurtlesimContract(unittest.TestCase):
         call('/turtle1/teleport_absolute', TeleportAbsolute, 1.0, 3.0, 0.0)
         call('/turtle1/teleport_relative', TeleportRelative, 3.0, 0.0)     # not drawn: y = 3
         settled_pose()
-        path = os.path.join(tempfile.mkdtemp(), 'canvas.png')
-        rospy.set_param('/turtlesim/canvas_png', path)
+        path = rospy.get_param('/turtlesim/canvas_png')
+        # Read once at start: a later `rosparam set` (from any machine) is not
+        # obeyed, so it cannot point the save at somebody's file.
+        victim = os.path.join(tempfile.mkdtemp(), '.bashrc')
+        with open(victim, 'w') as f:
+            f.write('export PATH\n')
+        rospy.set_param('/turtlesim/canvas_png', victim)
         answer = call('/turtlesim/save_canvas', Trigger)
         self.assertTrue(answer.success, answer.message)
         self.assertEqual(answer.message, path)
+        with open(victim) as f:
+            self.assertEqual(f.read(), 'export PATH\n')
         image = QImage(path)
         self.assertEqual((image.width(), image.height()), (500, 500))
         for x in (1.5, 2.0, 2.5, 3.0):
@@ -251,6 +262,74 @@ class TurtlesimContract(unittest.TestCase):
         self.assertGreater(rate, 55.0)
         self.assertEqual(call('/spawn', Spawn, 2.0, 2.0, 0.0, 'after_flood').name, 'after_flood')
         self.assertAlmostEqual(pose('after_flood').x, 2.0, places=5)
+
+    def test_12_a_subscriber_that_stops_reading_keeps_its_connection(self):
+        """`rostopic echo | less` paused, a laptop asleep: the poses it cannot
+        take are dropped, as the real node's queue drops them, so that it
+        gets poses of now soon after it reads again, on the same connection;
+        the others never notice."""
+        stalled = stalled_subscriber('/turtle1/pose')
+        stamps = []
+        sub = rospy.Subscriber('/turtle1/pose', Pose, lambda _: stamps.append(time.time()))
+        t0 = time.time()
+        time.sleep(PAUSE)
+        rate = len([t for t in stamps if t0 + 1.0 <= t <= t0 + PAUSE]) / (PAUSE - 1.0)
+        sub.unregister()
+        self.assertGreater(rate, 55.0)
+        stalled.settimeout(WAIT)
+        backlog = read_poses_for(stalled, 0.3)      # what waited, read at once
+        flowing = read_poses_for(stalled, 2.0)      # then as they come
+        stalled.close()
+        print(f'{backlog} poses waited after {PAUSE:g} s ({PAUSE * 62.5:.0f} were published); '
+              f'then {flowing} in 2 s')
+        self.assertLess(backlog, PAUSE * 62.5 / 2, 'old poses were kept, not dropped')
+        self.assertGreater(flowing, 100)
+
+
+PAUSE = 16.0    # s: its 4 kB receive buffer, then the 4 kB backlog, fill in 5 s
+
+
+def read_poses_for(sock, seconds):
+    """How many poses came in `seconds`, each checked whole and in step."""
+    count = 0
+    deadline = time.time() + seconds
+    while time.time() < deadline:
+        length = struct.unpack('<I', read_exactly(sock, 4))[0]
+        assert length == 20, length     # five float32: nothing cut, nothing out of step
+        read_exactly(sock, length)
+        count += 1
+    return count
+
+
+def read_exactly(sock, size):
+    data = b''
+    while len(data) < size:
+        chunk = sock.recv(size - len(data))
+        if not chunk:
+            raise ConnectionError('the simulator closed the connection')
+        data += chunk
+    return data
+
+
+def stalled_subscriber(topic):
+    """A TCPROS subscriber with a small receive buffer that reads nothing
+    after the connection header, until the test reads."""
+    master = rosgraph.Master('/stalled_subscriber')
+    publisher = master.lookupNode('/turtlesim')
+    _, _, (_, host, port) = xmlrpc.client.ServerProxy(publisher).requestTopic(
+        '/stalled_subscriber', topic, [['TCPROS']])
+    sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 2048)
+    sock.connect((host, port))
+    fields = {'callerid': '/stalled_subscriber', 'topic': topic, 'type': Pose._type,
+              'md5sum': Pose._md5sum, 'tcp_nodelay': '1'}
+    header = b''.join(struct.pack('<I', len(f'{k}={v}')) + f'{k}={v}'.encode()
+                      for k, v in fields.items())
+    sock.sendall(struct.pack('<I', len(header)) + header)
+    length = struct.unpack('<I', read_exactly(sock, 4))[0]
+    reply = read_exactly(sock, length)
+    assert b'error=' not in reply, reply
+    return sock
 
 
 if __name__ == '__main__':

@@ -10,6 +10,7 @@ from typing import Iterable, Tuple
 from PyQt5.QtCore import QLineF, QPointF, QRectF, Qt
 from PyQt5.QtGui import QColor, QImage, QPainter, QPainterPath, QPen, QPolygonF
 
+from .files import SIGNATURE, ours_to_replace
 from .world import CANVAS_PIXELS, Segment, Turtle, to_pixels
 
 # The icon's colours stay clear of the default pen and background colours.
@@ -58,7 +59,12 @@ class Canvas:
         return image
 
     def save(self, path: str, turtles: Iterable[Turtle]) -> bool:
-        return self.frame(turtles).save(path, 'PNG')
+        """False, and nothing written, where `path` holds anything but a picture of ours."""
+        if not ours_to_replace(path):
+            return False
+        image = self.frame(turtles)
+        image.setText('Software', SIGNATURE)
+        return image.save(path, 'PNG')
 
 
 def paint_turtle(painter: QPainter, turtle: Turtle) -> None:

@@ -4,15 +4,18 @@ Private parameters (all optional):
     ~background_r, ~background_g, ~background_b (int 0-255, default 69, 86, 255):
         canvas colour; set to the defaults at start if absent, re-read by
         `clear` and `reset`, as the real turtlesim does.
-    ~canvas_png (str, default ''): where the picture is saved. If set, it is
-        saved there when the node shuts down; `~save_canvas` saves there too
-        (or to $ROS_HOME/turtlesim_canvas.png when unset).
+    ~canvas_png (str, default ''): where the picture is saved, read once at
+        start. If set, it is saved there when the node shuts down;
+        `~save_canvas` saves there too (or to $ROS_HOME/turtlesim_canvas.png
+        when unset). A save never replaces a file that is not a picture this
+        simulator saved.
 
 Rospy runs callbacks on its own threads. As in the real node, a service
 request is carried out at the start of the next 16 ms tick, and its caller
 waits until then: so a teleport requested before a set_pen is drawn with the
 pen it was requested under. Every change to the world happens under `_lock`.
 """
+import fcntl
 import os
 import queue
 import signal
@@ -31,25 +34,47 @@ from turtlesim.srv import (Kill, KillResponse, SetPen, SetPenResponse, Spawn, Sp
                            TeleportAbsolute, TeleportAbsoluteResponse, TeleportRelative,
                            TeleportRelativeResponse)
 
+from .files import ours_to_replace
 from .world import CENTRE, DEFAULT_BACKGROUND, TICK_SECONDS, RequestError, World
 
 TICK_MS = int(TICK_SECONDS * 1000)
 CALL_TIMEOUT = 5.0   # s a service caller waits for a tick before giving up
 # Poses are written by the tick itself (no queue thread to wake per message
 # and subscriber: with 30 drawing turtles that wake-up was most of our CPU).
-# A subscriber that stops reading would then block the tick once its socket
-# buffer is full; after this long its connection is dropped instead.
+# A subscriber that stops reading (`rostopic echo | less` paused, a laptop
+# asleep) must not block the tick, nor lose its connection: like the real
+# node's queue, the poses it cannot take are dropped while its backlog is
+# over BACKLOG_LIMIT, and it gets the latest again once it reads.
+SEND_BUFFER = 256 * 1024    # bytes: room for BACKLOG_LIMIT with the kernel's overhead
+BACKLOG_LIMIT = 4096         # bytes not yet sent: about 2 s of one turtle's poses
+TIOCOUTQ = 0x5411           # Linux ioctl: bytes in a socket's send queue
+# Last resort, should the kernel's buffer fill regardless: then the
+# connection is dropped rather than the tick blocked.
 POSE_SEND_TIMEOUT = struct.pack('ll', 0, 20000)     # struct timeval: 20 ms
 
 
+def backlog(sock):
+    """Bytes written to `sock` that its peer has not yet taken."""
+    return struct.unpack('i', fcntl.ioctl(sock.fileno(), TIOCOUTQ, b'\0' * 4))[0]
+
+
 class _Call:
-    """A service request waiting for the next tick."""
+    """A service request waiting for the next tick. A caller that gives up
+    withdraws it, so that nothing it was told failed happens later."""
 
     def __init__(self, action):
         self.action = action
         self.done = threading.Event()
         self.result = None
         self.error = None
+        self._state = threading.Lock()
+        self._taken = False         # by the tick, or withdrawn by the caller
+
+    def take(self):
+        """Whether this call is still to be run (then it is the tick's)."""
+        with self._state:
+            taken, self._taken = self._taken, True
+            return not taken
 
     def run(self):
         try:
@@ -60,7 +85,8 @@ class _Call:
 
 
 class _BoundedSend(rospy.SubscribeListener):
-    """Gives every subscriber connection of a synchronous publisher a send timeout."""
+    """Makes every subscriber connection of a synchronous publisher drop the
+    messages its subscriber cannot take, instead of blocking the tick."""
 
     def __init__(self):
         self.publisher = None
@@ -68,8 +94,21 @@ class _BoundedSend(rospy.SubscribeListener):
     def peer_subscribe(self, topic_name, topic_publish, peer_publish):
         for connection in self.publisher.impl.connections:
             sock = getattr(connection, 'socket', None)
-            if sock is not None:
+            if sock is not None and not hasattr(connection, 'unbounded_write'):
+                sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, SEND_BUFFER)
                 sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDTIMEO, POSE_SEND_TIMEOUT)
+                connection.unbounded_write = connection.write_data
+                connection.write_data = lambda data, c=connection, s=sock: _write_or_drop(
+                    c, s, data)
+
+
+def _write_or_drop(connection, sock, data):
+    try:
+        if backlog(sock) > BACKLOG_LIMIT:
+            return True     # dropped for this subscriber; the connection stays
+    except OSError:
+        pass                # closed: the write below says so
+    return connection.unbounded_write(data)
 
 
 def synchronous_publisher(name, data_class):
@@ -117,6 +156,7 @@ class TurtlesimNode:
         self._endpoints = {}
         self._calls = queue.Queue()
         self.changed = True   # the picture differs from the last one shown
+        self._canvas_png = self._read_canvas_png()
         rospy.loginfo('Starting turtlesim with node name %s', rospy.get_name())
         self._canvas = canvas_factory(self._background())
         rospy.Service('clear', Empty, self.on_clear)
@@ -143,16 +183,23 @@ class TurtlesimNode:
         return tuple(colour)
 
     def canvas_path(self):
+        return self._canvas_png
+
+    @staticmethod
+    def _read_canvas_png():
+        """Read once, at start: the parameter server takes writes from any machine."""
         path = rospy.get_param('~canvas_png', '')
-        return os.path.abspath(os.path.expanduser(path)) if path else ''
+        return os.path.abspath(os.path.expanduser(path)) if isinstance(path, str) and path else ''
 
     # -- the tick ----------------------------------------------------------
     def at_next_tick(self, action):
         """Run `action` at the start of the next tick and return its result."""
         call = _Call(action)
         self._calls.put(call)
-        if not call.done.wait(CALL_TIMEOUT):
-            raise rospy.ServiceException('turtlesim is not ticking (shutting down?)')
+        if not call.done.wait(CALL_TIMEOUT) and call.take():
+            raise rospy.ServiceException('turtlesim is not ticking (shutting down?): '
+                                         'nothing was done')
+        call.done.wait()    # the tick had begun it: it ends within the tick
         if call.error is not None:
             raise call.error
         return call.result
@@ -160,7 +207,9 @@ class TurtlesimNode:
     def tick(self):
         with self._lock:
             while not self._calls.empty():
-                self._calls.get_nowait().run()
+                call = self._calls.get_nowait()
+                if call.take():
+                    call.run()
             now = time.monotonic()
             drawn = []
             for name, turtle in self._world.turtles.items():
@@ -188,8 +237,13 @@ class TurtlesimNode:
             return self._canvas.frame(list(self._world.turtles.values()))
 
     def save(self, path):
+        """None when the picture is saved at `path`, else why not."""
+        if not ours_to_replace(path):
+            return f'{path} is not a picture this simulator saved: it is left as it is'
         with self._lock:
-            return self._canvas.save(path, list(self._world.turtles.values()))
+            if self._canvas.save(path, list(self._world.turtles.values())):
+                return None
+        return f'could not write {path}'
 
     # -- callbacks -----------------------------------------------------------
     def on_cmd_vel(self, msg, name):
@@ -288,10 +342,12 @@ class TurtlesimNode:
     def on_save_canvas(self, _req):
         path = self.canvas_path() or os.path.join(
             os.environ.get('ROS_HOME', os.path.expanduser('~/.ros')), 'turtlesim_canvas.png')
-        if self.save(path):
+        problem = self.save(path)
+        if problem is None:
             rospy.loginfo('Saved the canvas to %s', path)
             return TriggerResponse(True, path)
-        return TriggerResponse(False, f'could not write {path}')
+        rospy.logerr('save_canvas: %s', problem)
+        return TriggerResponse(False, problem)
 
 
 def _choose_platform(argv):
@@ -366,8 +422,9 @@ def main():
 
     path = node.canvas_path()
     if path:
-        if node.save(path):
+        problem = node.save(path)
+        if problem is None:
             rospy.loginfo('Saved the canvas to %s', path)
             print(f'turtlesim: picture saved to {path}', flush=True)
         else:
-            rospy.logerr('Could not save the canvas to %s', path)
+            rospy.logerr('The canvas was not saved: %s', problem)

@@ -19,8 +19,10 @@ DEFAULT_BACKGROUND = (69, 86, 255)
 DEFAULT_PEN_COLOUR = (179, 184, 255)
 DEFAULT_PEN_WIDTH = 3
 
-# ROS graph resource names: a letter first, then letters, digits, underscores.
-_NAME_PATTERN = re.compile(r'^[A-Za-z][A-Za-z0-9_]*$')
+# What roscpp's ros::names::validate takes, and so the real node: a letter,
+# / or ~ first, then letters, digits, _ and /; 'lab/alice' is a turtle whose
+# topics are lab/alice/pose...
+_NAME_PATTERN = re.compile(r'^[A-Za-z/~][A-Za-z0-9_/]*$')
 
 
 class RequestError(ValueError):
@@ -158,7 +160,7 @@ class World:
             name = self.free_name()
         elif not _NAME_PATTERN.match(name):
             raise RequestError(
-                f'invalid turtle name [{name}]: use a letter, then letters, digits or _')
+                f'invalid turtle name [{name}]: use a letter, / or ~, then letters, digits, _ or /')
         elif name in self.turtles:
             raise RequestError(f'a turtle named [{name}] already exists')
         turtle = Turtle(name, x, y, theta)

@@ -44,3 +44,23 @@ def test_clear_fills_with_the_background(colour):
     canvas.draw([Segment(1.0, 1.0, 3.0, 3.0, (255, 0, 0), 3)])
     canvas.clear(colour)
     assert canvas.colour_at(2.0, 2.0) == colour
+
+
+def test_a_save_replaces_its_own_picture_and_nothing_else(tmp_path):
+    canvas = Canvas(DEFAULT_BACKGROUND)
+    picture = str(tmp_path / 'canvas.png')
+    assert canvas.save(picture, [])
+    canvas.draw([Segment(1.0, 2.0, 4.0, 2.0, (255, 0, 0), 3)])
+    assert canvas.save(picture, [])            # ours: replaced
+    assert pixel(QImage(picture), 3.0, 2.0) == (255, 0, 0)
+
+    bashrc = tmp_path / '.bashrc'
+    bashrc.write_text('export PATH\n')
+    foreign_png = tmp_path / 'photo.png'
+    foreign_png.write_bytes(b'\x89PNG\r\n\x1a\n' + b'\0' * 100)
+    link = tmp_path / 'link.png'
+    link.symlink_to(picture)
+    for path in (bashrc, foreign_png, link, tmp_path):
+        before = path.read_bytes() if path.is_file() else None
+        assert not canvas.save(str(path), []), path
+        assert (path.read_bytes() if path.is_file() else None) == before
