@@ -111,7 +111,8 @@ class TurtleDriver:
         try:
             pose = self._poses.get(timeout=POSE_TIMEOUT)
         except queue.Empty:
-            raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s') from None
+            raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s: turtlesim has '
+                                 'stopped, or the network to its machine is down') from None
         if rospy.is_shutdown():
             raise DrawingAborted('shutting down')
         return pose
