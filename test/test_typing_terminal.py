@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Typing mode end to end: roslaunch in a terminal, two keys typed faster
-than the turtle draws; both letters come out, in order, where they belong."""
+than the turtle draws; both letters come out, in order, where they belong.
+Then 32 keys at once (as many as may wait): every one is drawn, in order."""
 import unittest
 
 import rospy
@@ -8,7 +9,7 @@ import rostest
 from turtlesim.msg import Pose as PoseMsg
 
 from support.accuracy import touches_a_wall, vertex_errors
-from support.nodes import PoseRecorder, wait_until
+from support.nodes import LogWatch, PoseRecorder, wait_until
 from support.terminal import Terminal
 from turtle_letters.plan import Layout, glyph_for, glyph_strokes
 
@@ -44,6 +45,31 @@ class TypingInATerminal(unittest.TestCase):
         self.assertFalse(touches_a_wall(path))
         term.send_keys('C-c')
         self.assertTrue(term.wait_for('done', 30), term.screen())
+
+    def test_32_keys_typed_at_once_all_wait_their_turn(self):
+        rospy.init_node('typing_terminal_test')
+        logs = LogWatch()
+        term = Terminal(BURST_LAUNCH)
+        self.addCleanup(term.close)
+        self.assertTrue(term.wait_for('talker: press a letter or digit', 60), term.screen())
+        rospy.wait_for_message('/turtle1/pose', PoseMsg, timeout=30)
+        term.send_keys(BURST.lower())     # one write: the talker reads them all at once
+        controller = '/turtlebot_controller'
+
+        def drawn():
+            return [m.msg.split("'")[1] for m in logs.messages
+                    if m.name == controller and m.msg.startswith("Done drawing '")]
+        wait_until(lambda: len(drawn()) == len(BURST) or logs.count('ignored', controller),
+                   280, 'every key drawn', term.screen)
+        self.assertEqual(logs.count('ignored', controller), 0, term.screen())
+        self.assertEqual(''.join(drawn()), BURST)
+        term.send_keys('C-c')
+        self.assertTrue(term.wait_for('done', 30), term.screen())
+
+
+BURST = 'ABCDEFGHIJKLMNOPQRSTUVWXYZ012345'     # 32, jobs.TYPED_AHEAD
+BURST_LAUNCH = ('roslaunch turtle_letters draw_letter.launch headless:=true typing:=true '
+                'mode:=smooth linear_speed:=4.0 size:=0.5')
 
 
 if __name__ == '__main__':

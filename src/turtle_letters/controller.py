@@ -163,7 +163,7 @@ class TurtleController(TurtleDrawer):
         """The lab: the whole canvas from where the turtle stands. Its first
         letter's place is claimed so that no one spawns there."""
         s = self.settings
-        self.driver.listen()
+        self._connect()
         pose = self.driver.wait_for_pose(say=say_wait)
         if s.x is not None:
             rospy.logwarn('Turtle %s already exists: ~x and ~y are ignored; its first letter '
@@ -193,7 +193,7 @@ class TurtleController(TurtleDrawer):
         self.claims.claim(box, place, spawned=spawned or not exists, cursor=cursor)
         if exists:
             self.spawned = spawned
-            self.driver.listen()
+            self._connect()
             self.driver.wait_for_pose()
         else:
             self._spawn(place)
@@ -266,8 +266,12 @@ class TurtleController(TurtleDrawer):
         except rospy.ServiceException as e:
             raise Refused(spawn_refusal(self.driver, e)) from None
         self.spawned = True
-        self.driver.listen()
         rospy.loginfo('Spawned turtle %s at x=%.2f y=%.2f, facing +x', self.driver.name, *place)
+        self._connect()
+
+    def _connect(self):
+        """Listen to our turtle; say what to check if its topics do not connect."""
+        self.driver.listen()
         if not self.driver.wait_connected(CONNECT_SECONDS):
             rospy.logwarn('%s', not_connected_diagnosis(self.driver))
 
@@ -512,6 +516,9 @@ def stall_diagnosis(driver, pose):
 
 
 def not_connected_diagnosis(driver):
+    if driver.cmd_vel_connections():
+        return (f'no pose of turtle {driver.name} reached us on {driver.pose_topic} within '
+                f'{CONNECT_SECONDS:g} s, although turtlesim publishes them. {reach_advice()}')
     return (f'turtlesim has not connected to {driver.cmd_vel_topic} within {CONNECT_SECONDS:g} s, '
             f'so turtle {driver.name} will not move. {reach_advice()}')
 
