@@ -59,28 +59,32 @@ class Classroom(unittest.TestCase):
     def test_every_letter_is_drawn_as_a_single_letter_is(self):
         self.assertEqual(self.logs.count('stopped'), 0, self.outputs())
         for name, letter in zip(self.names, LETTERS):
-            first = self.starts[name]
-            start = PlannedPose(first.x, first.y, first.theta)
-            strokes, travel = expected(letter, [(first.x, first.y)], start, SIZE, BUILTIN, 'ccw')
-            path = self.recorders[name].path()
-            errors = vertex_errors(path, [v for stroke in strokes for v in stroke])
-            self.assertLess(max(errors), TOLERANCE, f'{name} drawing {letter}: vertices {errors}')
-            self.assertLess(worst_off(path, strokes, travel), TOLERANCE, f'{name} drawing {letter}')
+            with self.subTest(turtle=name, letter=letter):
+                first = self.starts[name]
+                start = PlannedPose(first.x, first.y, first.theta)
+                strokes, travel = expected(letter, [(first.x, first.y)], start, SIZE, BUILTIN,
+                                           'ccw')
+                path = self.recorders[name].path()
+                errors = vertex_errors(path, [v for stroke in strokes for v in stroke])
+                self.assertLess(max(errors), TOLERANCE, f'vertices {errors}')
+                self.assertLess(worst_off(path, strokes, travel), TOLERANCE)
 
     def test_every_turtle_has_a_part_and_no_two_parts_cross(self):
         self.assertLessEqual(set(self.names), set(self.parts))
         for a in self.names:
             for b in self.names:
                 if a < b:
-                    self.assertFalse(overlaps(self.parts[a], self.parts[b]),
-                                     f'{a} {self.parts[a]} and {b} {self.parts[b]}')
+                    with self.subTest(a=a, b=b):
+                        self.assertFalse(overlaps(self.parts[a], self.parts[b]),
+                                         f'{self.parts[a]} and {self.parts[b]}')
 
     def test_no_turtle_leaves_its_part(self):
         for name in self.names:
-            x0, y0, x1, y1 = self.parts[name]
-            outside = [(round(x, 3), round(y, 3)) for x, y in self.recorders[name].path()
-                       if not (x0 <= x <= x1 and y0 <= y <= y1)]
-            self.assertEqual(outside, [], f'{name} left its part {self.parts[name]}')
+            with self.subTest(turtle=name):
+                x0, y0, x1, y1 = self.parts[name]
+                outside = [(round(x, 3), round(y, 3)) for x, y in self.recorders[name].path()
+                           if not (x0 <= x <= x1 and y0 <= y <= y1)]
+                self.assertEqual(outside, [], f'it left its part {self.parts[name]}')
 
 
 if __name__ == '__main__':

@@ -75,9 +75,8 @@ class Faults(unittest.TestCase):
     def moving_since(self, t0):
         return self.poses.moving_since(t0)
 
-    def wait_until_still(self, t0, timeout=60):
-        self.poses.wait_until_still(t0, timeout)
-        return True
+    def wait_until_still(self, t0, what, timeout=60):
+        self.poses.wait_until_still(t0, timeout, what=what)
 
     def last_pose(self):
         return self.poses.last()
@@ -113,7 +112,7 @@ class Faults(unittest.TestCase):
             time.sleep(0.0008)
         burst_seconds = time.time() - t0
         self.assertLess(burst_seconds, 5.0, 'the test could not send a burst')
-        self.assertTrue(self.wait_until_still(t0), 'the drawing never ended')
+        self.wait_until_still(t0, 'the drawing to end')
         busy = (cpu_seconds(pid) - cpu0) / (time.time() - t0)
         self.assertEqual(self.logs.count("Drawing 'N'", CONTROLLER), 1)
         self.assert_at_n_end()
@@ -130,7 +129,7 @@ class Faults(unittest.TestCase):
         self.logs.wait_for('Waiting for turtlesim', 10, CONTROLLER)
         t0 = time.time()
         sim = self.start(simulator())
-        self.assertTrue(self.wait_until_still(t0), 'the kept trigger was not drawn')
+        self.wait_until_still(t0, 'the kept trigger to be drawn')
         self.assert_at_n_end()
         self.assertEqual(self.logs.count('Waiting for turtlesim', CONTROLLER), 1)
         self.assert_no_traceback(ctl, sim)
@@ -157,7 +156,7 @@ class Faults(unittest.TestCase):
         wait_until(lambda: subscribed(CONTROLLER, '/turtle1/pose'), 30,
                    "the controller's pose subscription to the new simulator")
         self.chatter.publish(String('P'))
-        self.assertTrue(self.wait_until_still(t0), 'no drawing after the simulator came back')
+        self.wait_until_still(t0, 'a drawing after the simulator came back')
         self.assert_at_n_end()
         self.assert_no_traceback(ctl)
 

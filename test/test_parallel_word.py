@@ -53,12 +53,13 @@ class ParallelWord(unittest.TestCase):
         self.assertEqual(self.logs.count('stopped'), 0)
         for char, place, start, recorder in zip(self.text, self.places, self.starts,
                                                 self.recorders):
-            strokes, travel = expected(char, [place], start, self.size)
-            path = recorder.path()
-            self.assertTrue(path, f'no pose of the turtle drawing {char}')
-            errors = vertex_errors(path, [v for stroke in strokes for v in stroke])
-            self.assertLess(max(errors), TOLERANCE, f'{char}: vertices {errors}')
-            self.assertLess(worst_off(path, strokes, travel), TOLERANCE, char)
+            with self.subTest(char=char):
+                strokes, travel = expected(char, [place], start, self.size)
+                path = recorder.path()
+                self.assertTrue(path, 'no pose of the turtle drawing it')
+                errors = vertex_errors(path, [v for stroke in strokes for v in stroke])
+                self.assertLess(max(errors), TOLERANCE, f'vertices {errors}')
+                self.assertLess(worst_off(path, strokes, travel), TOLERANCE)
 
     def test_the_spare_turtles_are_killed_when_done(self):
         def spares():

@@ -11,7 +11,7 @@ import rospy
 import rostest
 from std_msgs.msg import String
 
-from support.nodes import LogWatch, NodeProcess, node_pid
+from support.nodes import LogWatch, NodeProcess, node_pid, wait_until
 from support.procstat import cpu_seconds
 from support.terminal import Terminal
 
@@ -30,13 +30,16 @@ class TalkerFaults(unittest.TestCase):
     def start_talker(self, stdin):
         talker = NodeProcess('turtle_letters', 'talker.py', stdin=stdin)
         self.addCleanup(talker.stop)
-        deadline = time.time() + 30
-        while time.time() < deadline:
+        pid = []
+
+        def up():
             try:
-                return talker, node_pid(TALKER)
-            except Exception:
-                time.sleep(0.2)
-        self.fail('the talker did not come up:\n' + talker.output())
+                pid.append(node_pid(TALKER))
+                return True
+            except Exception:   # not registered yet
+                return False
+        wait_until(up, 30, 'the talker to come up', talker.output)
+        return talker, pid[0]
 
     def assert_idles_then_ends_cleanly(self, talker, pid, sig):
         cpu0, t0 = cpu_seconds(pid), time.time()
@@ -57,9 +60,7 @@ class TalkerFaults(unittest.TestCase):
         time.sleep(0.5)
         heard = []
         rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
-        deadline = time.time() + 10
-        while not heard and time.time() < deadline:
-            time.sleep(0.05)
+        wait_until(lambda: heard, 10, 'the kept press')
         self.assertEqual(heard, ['P'])                         # kept, not lost
         self.assertEqual(self.logs.count('End of input', TALKER), 1)
         self.assert_idles_then_ends_cleanly(talker, pid, signal.SIGTERM)
@@ -74,9 +75,7 @@ class TalkerFaults(unittest.TestCase):
         heard = []
         subscriber = rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
         self.addCleanup(subscriber.unregister)
-        deadline = time.time() + 10
-        while len(heard) < 32 and time.time() < deadline:
-            time.sleep(0.05)
+        wait_until(lambda: len(heard) >= 32, 10, '32 kept presses')
         time.sleep(1.0)                 # more than 32 would have come by now
         self.assertEqual(heard, ['P'] * 32)
         # its own output: a line logged this early may precede the /rosout connection
@@ -91,16 +90,12 @@ class TalkerFaults(unittest.TestCase):
         talker, pid = self.start_talker(read_end)
         os.close(read_end)
         self.addCleanup(os.close, write_end)
-        deadline = time.time() + 20
-        while subscriber.get_num_connections() == 0 and time.time() < deadline:
-            time.sleep(0.05)
+        wait_until(lambda: subscriber.get_num_connections(), 20, 'the talker on /chatter')
         for _ in range(16):             # 1 MiB with no newline, then a press
             os.write(write_end, b'x' * 65536)
         os.write(write_end, b'P')
-        deadline = time.time() + 15
-        while not heard and time.time() < deadline:
-            time.sleep(0.05)
-        self.assertEqual(heard, ['P'], 'a press after a long unfinished line was not published')
+        wait_until(lambda: heard, 15, 'a press after a long unfinished line')
+        self.assertEqual(heard, ['P'])
         self.assertTrue(talker.alive())
 
     def test_dev_null(self):

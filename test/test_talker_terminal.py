@@ -10,6 +10,7 @@ import rospy
 import rostest
 from std_msgs.msg import String
 
+from support.nodes import wait_until
 from support.terminal import Terminal
 
 # tmux key names; tmux sends each as the real terminal's escape sequence
@@ -41,17 +42,18 @@ class TalkerInATerminal(unittest.TestCase):
         self.addCleanup(self.term.close)
         self.assertTrue(self.term.wait_for(prompt, 30), self.term.screen())
         self.assertIn('-icanon', self.term.flags())        # cbreak: no Enter needed
-        deadline = time.time() + 20
-        while self.subscriber.get_num_connections() == 0 and time.time() < deadline:
-            time.sleep(0.05)
-        self.assertGreater(self.subscriber.get_num_connections(), 0, 'never connected')
+        wait_until(lambda: self.subscriber.get_num_connections(), 20, 'the talker on /chatter',
+                   self.term.screen)
         with self.lock:
             self.heard.clear()
 
     def heard_after(self, count, timeout=10.0):
-        deadline = time.time() + timeout
-        while len(self.heard) < count and time.time() < deadline:
-            time.sleep(0.05)
+        """What was heard once `count` messages came, or after `timeout` s (the
+        callers assert on it, so a shortfall is said with what did come)."""
+        try:
+            wait_until(lambda: len(self.heard) >= count, timeout, f'{count} messages')
+        except AssertionError:
+            pass
         return list(self.heard)
 
     def quit_and_check_terminal(self):

@@ -154,9 +154,10 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
 
 def word_run(processes, recorder, font, size=1.0, speed=1.0):
     """WORD in a Hershey font, smooth mode, from the ~text topic."""
-    from turtle_letters.drawing import LetterDrawer
+    from turtle_letters.drawing import plan_text
     from turtle_letters.route import travel_length
     from turtle_letters.settings import Settings
+    from turtle_letters.sheet import Sheet
     rospy.ServiceProxy('/reset', Empty)()
     forget_controller_parameters()
     controller = processes.start(
@@ -175,11 +176,11 @@ def word_run(processes, recorder, font, size=1.0, speed=1.0):
     finally:
         text.unregister()
         processes.stop(controller)
-    drawer = LetterDrawer(Settings(lambda name, default: {
-        '~font': font, '~size': size, '~mode': 'smooth', '~linear_speed': speed}.get(name, default)))
+    settings = Settings(lambda name, default: {
+        '~font': font, '~size': size, '~mode': 'smooth', '~linear_speed': speed}.get(name, default))
     start = PlannedPose(5.544445, 5.544445, 0.0)
-    places = drawer.reserve(WORD, start)[0]
-    plan = drawer.plan(WORD, places, start)
+    places = Sheet(size, settings.font).reserve(WORD, start)[0]
+    plan = plan_text(WORD, places, start, settings)
     travel_moves, here = [], plan.start
     for stroke in plan.strokes:
         travel_moves.append([here, stroke[0]])
@@ -188,7 +189,7 @@ def word_run(processes, recorder, font, size=1.0, speed=1.0):
     path = [(p.x, p.y) for p in poses]
     moving = [t for t, m in commands if m]
     drawing = max(moving) - min(moving)
-    reading = word_strokes(WORD, places, size, drawer.settings.font)
+    reading = word_strokes(WORD, places, size, settings.font)
     return {
         'font': font, 'drawing_s': drawing, 'ideal_s': (plan.ink + plan.travel) / speed,
         'path_max_mm': max(min(distance_to_polyline(q, s) if len(s) > 1 else

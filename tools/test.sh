@@ -34,7 +34,7 @@ mkdir -p "$results/network"
 (cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
   --junitxml="$results/network/pytest.xml" test/network) || status=1
 
-echo "== workspace tests: underlay, switching simulators, the README's recipe, install space"
+echo "== workspace tests: underlay, switching simulators, doc/install.md's recipe, install space"
 mkdir -p "$results/workspace"
 (cd "$REPO" && "$ROS_PYTHON" -m pytest -q -p no:cacheprovider \
   --junitxml="$results/workspace/pytest.xml" test/workspace) || status=1

@@ -20,7 +20,7 @@ import rosgraph
 import rosgraph.names
 import rospy
 
-from .driver import beside
+from .names import beside
 from .liveness import answers
 from .parts import overlaps
 

@@ -1,21 +1,22 @@
-"""A drawing, in the lab's own calls. No ROS here.
+"""A drawing: a text's plan, and the modes that carry a plan out. No ROS here.
 
-LetterDrawer turns text into the calls the lab's class makes: in timed mode
-rotate(degrees) and move(meters), so the lab's N is literally rotate(90),
-move(3.0), rotate(225), move(3.5), rotate(135), move(3.0); in feedback mode
-steer(primitive), which closes the loop on the pose; in smooth mode
-glide(points), which traces a whole stroke without stopping; pen(down) to
-lift the pen for travel; clear() when the canvas (or the turtle's part of
-it) is full. A subclass supplies those calls:
-TurtleController with ROS, a recorder in the unit tests.
+plan_text() turns a text at its places into a Plan: its strokes, and the
+primitives (plan.Turn, Line, Pen) that draw them. A mode from MODES carries
+the plan out on a turtle, anything with the lab's calls:
+
+    rotate(degrees), move(meters)   timed: the lab's open-loop primitives
+    steer(primitive)                feedback: closed loop on the pose
+    glide(points)                   smooth: a whole stroke without stopping
+    pen(down)                       up for travel, down to draw
+
+turtle.Turtle is one such turtle; the unit tests' recorder is another.
 """
 import math
+import time
 from typing import List, NamedTuple
 
 from .font import BUILTIN
-from .settings import DEFAULT_PEN
-from .plan import (SAME_POINT, Layout, Line, Pen, PlannedPose, Turn, plan_strokes,
-                   word_strokes)
+from .plan import SAME_POINT, Line, Pen, Turn, plan_strokes, word_strokes
 from .route import ink_length, order_strokes, travel_length
 
 
@@ -28,121 +29,96 @@ class Plan(NamedTuple):
     seconds: float          # how long it should take
 
 
-class LetterDrawer:
-    def __init__(self, settings):
-        self.settings = settings
-        # On a shared canvas, (first place, bounds) of this turtle's part
-        # (see parts.py); None: the whole canvas, from where the turtle stands.
-        self.part = None
-        self.resume_at = None   # where a restarted controller's next letter goes in its part
-        self._layout = None
-        # turtlesim's pen starts down in its default colour: a call is needed
-        # only for another colour, or when the pen may have been left up
-        self._pen_ready = settings.pen == DEFAULT_PEN
+def plan_text(text, places, start, settings) -> Plan:
+    """The strokes of `text` at `places` and the primitives that draw them
+    from `start` (a PlannedPose). A Hershey font's strokes go in the order and
+    direction that travels least with the pen up; the builtin font's keep the
+    order and direction they are drawn in (so every N is the lab's N)."""
+    s = settings
+    here = (start.x, start.y)
+    strokes = word_strokes(text, places, s.size, s.font)
+    if s.font is not BUILTIN:
+        strokes = order_strokes(strokes, here)
+    primitives, _ = plan_strokes(strokes, start, s.turn_direction)
+    plan = Plan(here, strokes, primitives, ink_length(strokes), travel_length(strokes, here), 0.0)
+    return plan._replace(seconds=MODES[s.mode].seconds(plan, s))
 
-    def forget_layout(self):
-        """After a failed drawing: the next one starts a new layout where the
-        turtle then is (in a part: at the part's next place, past what the
-        failed one reserved), and puts the pen down first."""
-        self.resume_at = self.cursor if self.part is not None else None
-        self._layout = None
-        self._pen_ready = False
 
-    def reserve(self, text, where: PlannedPose):
-        """The places of `text`'s characters and whether the canvas must be
-        cleared first; raises plan.DoesNotFit (then nothing was reserved)."""
-        if self._layout is None:
-            s = self.settings
-            if self.part is None:
-                self._layout = Layout((where.x, where.y), s.size, s.font)
+class Timed:
+    """The lab's way: every Turn a rotate(degrees), every Line a move(meters)."""
+
+    def seconds(self, plan, settings):
+        return sum(abs(p.angle) / settings.angular_speed if isinstance(p, Turn)
+                   else p.length / settings.linear_speed
+                   for p in plan.primitives if not isinstance(p, Pen))
+
+    def carry_out(self, plan, turtle, progress):
+        def step(primitive):
+            if isinstance(primitive, Turn):
+                turtle.rotate(math.degrees(primitive.angle))
             else:
-                self._layout = Layout(self.part[0], s.size, s.font, bounds=self.part[1])
-                if self.resume_at is not None:
-                    self._layout.cursor = self.resume_at
-        return self._layout.reserve(text)
+                turtle.move(primitive.length)
+        _each_primitive(plan, turtle, step, progress)
 
-    @property
-    def cursor(self):
-        """Where the next letter goes, once a drawing has been laid out."""
-        return self._layout.cursor if self._layout is not None else self.resume_at
 
-    def plan(self, text, places, start: PlannedPose) -> Plan:
-        """The strokes of `text` at `places` and the primitives that draw them
-        from `start`. A Hershey font's strokes go in the order and direction
-        that travels least with the pen up; the builtin font's keep the order
-        and direction they are drawn in (so every N is the lab's N)."""
-        s = self.settings
-        here = (start.x, start.y)
-        strokes = word_strokes(text, places, s.size, s.font)
-        if s.font is not BUILTIN:       # the builtin font keeps the lab's order and direction
-            strokes = order_strokes(strokes, here)
-        primitives, _ = plan_strokes(strokes, start, s.turn_direction)
-        ink, travel = ink_length(strokes), travel_length(strokes, here)
-        if s.mode == 'smooth':
-            seconds = (ink + travel) / s.linear_speed
-        else:
-            seconds = sum(abs(p.angle) / s.angular_speed if isinstance(p, Turn)
-                          else p.length / s.linear_speed
-                          for p in primitives if not isinstance(p, Pen))
-        return Plan(here, strokes, primitives, ink, travel, seconds)
+class Feedback:
+    """The same primitives, each steered to its end on the pose."""
 
-    def trace(self, plan: Plan, must_clear: bool):
-        """Carry out a plan; progress(ink drawn, ink in all) after each part."""
-        if must_clear:
-            self.clear()
-        if not self._pen_ready:
-            self.pen(True)
-            self._pen_ready = True
-        drawn = 0.0
-        if self.settings.mode == 'smooth':
-            here = plan.start
-            for stroke in plan.strokes:
-                if math.hypot(stroke[0][0] - here[0], stroke[0][1] - here[1]) > SAME_POINT:
-                    self.pen(False)
-                    self.glide(stroke[:1])
-                    self.pen(True)
-                self.glide(stroke[1:])
-                here = stroke[-1]
-                drawn += ink_length([stroke])
-                self.progress(drawn, plan.ink)
-            return
-        pen_down = True
-        for primitive in plan.primitives:
-            self._carry_out(primitive)
-            if isinstance(primitive, Pen):
-                pen_down = primitive.down
-            elif isinstance(primitive, Line) and pen_down:
-                drawn += primitive.length
-                self.progress(drawn, plan.ink)
+    def seconds(self, plan, settings):
+        return MODES['timed'].seconds(plan, settings)
 
-    def _carry_out(self, primitive):
+    def carry_out(self, plan, turtle, progress):
+        _each_primitive(plan, turtle, turtle.steer, progress)
+
+
+class Smooth:
+    """Each stroke glided through without stopping; pen-up glides between them."""
+
+    def seconds(self, plan, settings):
+        return (plan.ink + plan.travel) / settings.linear_speed
+
+    def carry_out(self, plan, turtle, progress):
+        here, drawn = plan.start, 0.0
+        for stroke in plan.strokes:
+            if math.hypot(stroke[0][0] - here[0], stroke[0][1] - here[1]) > SAME_POINT:
+                turtle.pen(False)
+                turtle.glide(stroke[:1])
+                turtle.pen(True)
+            turtle.glide(stroke[1:])
+            here = stroke[-1]
+            drawn += ink_length([stroke])
+            progress(drawn, plan.ink)
+
+
+MODES = {'timed': Timed(), 'feedback': Feedback(), 'smooth': Smooth()}
+
+
+def _each_primitive(plan, turtle, step, progress):
+    """Pens to the turtle, the rest to `step`; progress after each line drawn."""
+    pen_down, drawn = True, 0.0
+    for primitive in plan.primitives:
         if isinstance(primitive, Pen):
-            self.pen(primitive.down)
-        elif self.settings.mode == 'feedback':
-            self.steer(primitive)
-        elif isinstance(primitive, Turn):
-            self.rotate(math.degrees(primitive.angle))
-        else:
-            self.move(primitive.length)
+            turtle.pen(primitive.down)
+            pen_down = primitive.down
+            continue
+        step(primitive)
+        if isinstance(primitive, Line) and pen_down:
+            drawn += primitive.length
+            progress(drawn, plan.ink)
 
-    # Supplied by a subclass.
-    def rotate(self, degrees):
-        raise NotImplementedError
 
-    def move(self, meters):
-        raise NotImplementedError
+class Progress:
+    """Every `period` s of a drawing, one line: how far, and how long to go."""
 
-    def steer(self, primitive):
-        raise NotImplementedError
+    def __init__(self, say, period=5.0, now=time.monotonic):
+        self.say, self.period, self.now = say, period, now
+        self.started = self.last = now()
 
-    def glide(self, points):
-        raise NotImplementedError
-
-    def progress(self, ink_drawn, ink):
-        pass
-
-    def pen(self, down):
-        raise NotImplementedError
-
-    def clear(self):
-        raise NotImplementedError
+    def __call__(self, ink_drawn, ink):
+        now = self.now()
+        if now - self.last < self.period or not 0 < ink_drawn < ink - 1e-6:
+            return
+        self.last = now
+        to_go = (now - self.started) * (ink - ink_drawn) / ink_drawn
+        self.say(f'{100 * ink_drawn / ink:.0f}% of the ink drawn ({ink_drawn:.2f} of {ink:.2f} m); '
+                 f'about {to_go:.0f} s to go')

@@ -5,14 +5,14 @@ import queue
 import threading
 import time
 
-import rosgraph.names
+import rosgraph
 import rospy
 from geometry_msgs.msg import Twist
 from std_srvs.srv import Empty
 from turtlesim.msg import Pose
 from turtlesim.srv import Kill, SetPen, Spawn
 
-from .network import reach_advice
+from .names import beside
 
 POSE_TIMEOUT = 1.0      # s without a pose: the simulator is gone
 POSES_KEPT = 1000       # 16 s of ticks: the drawing thread reads far faster
@@ -26,22 +26,92 @@ class DrawingAborted(RuntimeError):
     pass
 
 
-def beside(turtle, name):
-    """`name` in the namespace that holds the turtle's name: where turtlesim
-    has its own services (spawn, kill, clear) and its other turtles."""
-    return rosgraph.names.ns_join(rosgraph.names.namespace(rospy.resolve_name(turtle)), name)
+class NoPoses(DrawingAborted):
+    """turtlesim publishes the turtle's poses, but none reach us."""
+
+
+class PoseStream:
+    """A turtle's poses, as turtlesim publishes them (one a tick): the latest,
+    and the ones the drawing thread has not read yet."""
+
+    def __init__(self, topic, published):
+        self.topic = topic
+        self.latest = None
+        self._published = published     # () -> whether turtlesim publishes the topic
+        self._queue = queue.Queue(maxsize=POSES_KEPT)
+        self._subscriber = None
+
+    def listen(self):
+        """Subscribe. Once the turtle exists, if we spawn it: then the master
+        hands us turtlesim's publisher at once, instead of calling this machine
+        back later (which a machine the master cannot reach would never hear)."""
+        if self._subscriber is None:
+            self._subscriber = rospy.Subscriber(self.topic, Pose, self._on_pose,
+                                                queue_size=100, tcp_nodelay=True)
+
+    def _on_pose(self, msg):
+        self.latest = msg
+        if self._queue.full():          # idle: nobody reads; keep only the newest
+            self._queue.get_nowait()
+        self._queue.put_nowait(msg)
+
+    def wait(self, say=True, patience=None):
+        """The latest pose, once there is one; says once that it waits (if
+        `say`, and none came within a second). After `patience` s, if
+        turtlesim publishes the poses but none reach us, raises NoPoses."""
+        waited = 0
+        while self.latest is None and not rospy.is_shutdown():
+            if waited == 2 and say:
+                rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when '
+                              'it comes', self.topic)
+            if patience is not None and waited * 0.5 >= patience and self._published():
+                raise NoPoses(patience)
+            try:
+                self._queue.get(timeout=0.5)
+            except queue.Empty:
+                pass
+            waited += 1
+        if self.latest is None:
+            raise DrawingAborted('shutting down')
+        return self.latest
+
+    def next(self):
+        """The next pose: the next tick."""
+        try:
+            pose = self._queue.get(timeout=POSE_TIMEOUT)
+        except queue.Empty:
+            raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s: turtlesim has '
+                                 'stopped, or the network to its machine is down') from None
+        if rospy.is_shutdown():
+            raise DrawingAborted('shutting down')
+        return pose
+
+    def drop_stale(self):
+        """Poses from before now would count ticks that are not ours."""
+        while not self._queue.empty():
+            self._queue.get_nowait()
+
+    def forget(self):
+        """A new turtle of the same name: nothing of the old one counts."""
+        self.latest = None
+        self.drop_stale()
+
+    def connected(self):
+        return self._subscriber is not None and self._subscriber.get_num_connections() > 0
+
+    def close(self):
+        if self._subscriber is not None:
+            self._subscriber.unregister()
 
 
 class TurtleDriver:
-    """Subscribes `TURTLE/pose`; publishes `TURTLE/cmd_vel`; calls
+    """Subscribes `TURTLE/pose` (its `poses`); publishes `TURTLE/cmd_vel`; calls
     `TURTLE/set_pen`, and `spawn`, `kill` and `clear` beside the turtle.
     TURTLE is a name like turtle1 (relative to the node's namespace) or /alice."""
 
     def __init__(self, turtle='turtle1'):
         self.turtle = turtle
         self.name = rospy.resolve_name(turtle).rsplit('/', 1)[1]    # turtlesim's name for it
-        self._poses = queue.Queue(maxsize=POSES_KEPT)
-        self.latest_pose = None
         self.commanded = (0.0, 0.0, 0.0)       # the last command sent
         self._sent_at = 0.0
         self._publish_lock = threading.Lock()
@@ -51,22 +121,8 @@ class TurtleDriver:
         self._clear = rospy.ServiceProxy(beside(turtle, 'clear'), Empty)
         self._spawn = rospy.ServiceProxy(beside(turtle, 'spawn'), Spawn)
         self._kill = rospy.ServiceProxy(beside(turtle, 'kill'), Kill)
-        self.pose_topic = rospy.resolve_name(f'{turtle}/pose')
-        self._pose_sub = None
+        self.poses = PoseStream(rospy.resolve_name(f'{turtle}/pose'), self.exists)
         rospy.on_shutdown(self._on_shutdown)
-
-    def listen(self):
-        """Subscribe to the turtle's poses. Once it exists, if we spawn it:
-        then the master hands us turtlesim's publisher at once, instead of
-        calling this machine back later (which a machine the master cannot
-        reach would never hear)."""
-        if self._pose_sub is None:
-            self._pose_sub = rospy.Subscriber(self.pose_topic, Pose, self._on_pose,
-                                              queue_size=100, tcp_nodelay=True)
-
-    @property
-    def spawn_service(self):
-        return self._spawn.resolved_name
 
     @property
     def cmd_vel_topic(self):
@@ -74,48 +130,6 @@ class TurtleDriver:
 
     def cmd_vel_connections(self):
         return self._cmd_vel.get_num_connections()
-
-    def _on_pose(self, msg):
-        self.latest_pose = msg
-        if self._poses.full():          # idle: nobody reads; keep only the newest
-            self._poses.get_nowait()
-        self._poses.put_nowait(msg)
-
-    def wait_for_pose(self, say=True, patience=None):
-        """The latest pose, once there is one; says once that it waits (if
-        `say`, and none came within a second). After `patience` s, if
-        turtlesim publishes the poses but none reach us, gives up."""
-        waited = 0
-        while self.latest_pose is None and not rospy.is_shutdown():
-            if waited == 2 and say:
-                rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when '
-                              'it comes', self.pose_topic)
-            if patience is not None and waited * 0.5 >= patience and self.exists():
-                raise DrawingAborted(f'no pose on {self.pose_topic} for {patience:g} s although '
-                                     f'turtlesim publishes it. {reach_advice()}')
-            try:
-                self._poses.get(timeout=0.5)
-            except queue.Empty:
-                pass
-            waited += 1
-        if self.latest_pose is None:
-            raise DrawingAborted('shutting down')
-        return self.latest_pose
-
-    def drop_stale_poses(self):
-        """Poses from before now would count ticks that are not ours."""
-        while not self._poses.empty():
-            self._poses.get_nowait()
-
-    def next_pose(self):
-        try:
-            pose = self._poses.get(timeout=POSE_TIMEOUT)
-        except queue.Empty:
-            raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s: turtlesim has '
-                                 'stopped, or the network to its machine is down') from None
-        if rospy.is_shutdown():
-            raise DrawingAborted('shutting down')
-        return pose
 
     def publish(self, command, repeat=False):
         """Send `command` (linear x, linear y, angular z) if it differs from
@@ -144,11 +158,23 @@ class TurtleDriver:
         master = rosgraph.Master(rospy.get_name())
         deadline = time.monotonic() + wait
         while True:
-            if any(name == self.pose_topic for name, _ in master.getPublishedTopics('')):
+            if any(name == self.poses.topic for name, _ in master.getPublishedTopics('')):
                 return True
             if time.monotonic() >= deadline or rospy.is_shutdown():
                 return False
             time.sleep(0.05)
+
+    def wait_for_simulator(self):
+        """Wait for turtlesim's spawn service; whether we had to (and said so)."""
+        spawn = self._spawn.resolved_name
+        try:
+            rospy.wait_for_service(spawn, timeout=2.0)
+            return False
+        except rospy.ROSException:
+            rospy.loginfo('Waiting for turtlesim: no %s service yet; drawings start when it comes',
+                          spawn)
+            rospy.wait_for_service(spawn)
+            return True
 
     def spawn(self, x, y, theta=0.0):
         """Spawn the turtle; raises rospy.ServiceException if turtlesim refuses."""
@@ -166,26 +192,17 @@ class TurtleDriver:
         `timeout` s (a new turtle's topics take a moment to connect)."""
         deadline = time.monotonic() + timeout
         while not rospy.is_shutdown() and time.monotonic() < deadline:
-            if self._cmd_vel.get_num_connections() and self.poses_connected():
+            if self._cmd_vel.get_num_connections() and self.poses.connected():
                 return True
             time.sleep(0.02)
         return False
-
-    def poses_connected(self):
-        return self._pose_sub is not None and self._pose_sub.get_num_connections() > 0
 
     def close(self):
         """Let go of the turtle's topics (a spare turtle, once killed)."""
         with self._publish_lock:
             self._stopping = True
         self._cmd_vel.unregister()
-        if self._pose_sub is not None:
-            self._pose_sub.unregister()
-
-    def forget_poses(self):
-        """A new turtle of the same name: nothing of the old one counts."""
-        self.latest_pose = None
-        self.drop_stale_poses()
+        self.poses.close()
 
     def set_pen(self, pen, down):
         """Lowering the pen sets its colour and width too (turtlesim's set_pen)."""
@@ -204,3 +221,17 @@ class TurtleDriver:
         # The publisher's queue thread sends it; give it a moment before
         # rospy closes the topic (the turtle is at most one tick away).
         time.sleep(0.1)
+
+
+def call_briefly(call, timeout=2.0):
+    """A service call that must not hold up a shutdown: at most `timeout` s."""
+    thread = threading.Thread(target=lambda: _quietly(call), daemon=True)
+    thread.start()
+    thread.join(timeout)
+
+
+def _quietly(call):
+    try:
+        call()
+    except Exception:   # the turtle or turtlesim is gone already: nothing to undo
+        pass

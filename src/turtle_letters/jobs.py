@@ -59,3 +59,24 @@ class Jobs:
     def done(self) -> None:
         with self._changed:
             self._drawing = False
+
+
+def chatter_request(data: str, trigger: str, typing: bool, font):
+    """What a message on chatter asks for: ('key', character) in typing mode,
+    ('trigger', None), or ('ignored', why)."""
+    if typing:
+        if data == ' ' or (len(data) == 1 and font.glyph(data) is not None):
+            return 'key', data if font.case_sensitive else data.upper()
+        return 'ignored', 'typing mode draws single letters or digits'
+    if data == trigger:
+        return 'trigger', None
+    return 'ignored', f'the trigger is {trigger!r}'
+
+
+def text_request(data: str, font):
+    """(text to draw, None), or (None, why not) for a text on ~text."""
+    text = data if font.case_sensitive else data.upper()
+    if not text.strip() or font.undrawable(text):
+        return None, (f'font {font.name} has no glyph for '
+                      f'{font.undrawable(text)[:10] or "a blank text"}')
+    return text, None

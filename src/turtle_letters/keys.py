@@ -6,6 +6,7 @@ letters (F1 would send the trigger), so KeyDecoder drops every sequence, and
 a bare Esc too, before a key is looked up.
 """
 import codecs
+import os
 import string
 from typing import List, Optional
 
@@ -15,6 +16,8 @@ ESC = '\x1b'
 # Seconds to wait for the rest of an escape sequence before taking a lone
 # ESC as the Esc key: terminals send a sequence in one write.
 ESCAPE_WAIT = 0.05
+READ_SIZE = 4096    # bytes read at once; each read is handled before the next
+READY, TIMED_OUT, SHUTDOWN = 'ready', 'timed out', 'shutdown'    # what a wait says
 
 
 def bindings(trigger: str) -> dict:
@@ -78,3 +81,23 @@ def _sequence_complete(sequence: str) -> bool:
     if sequence[:3] == ESC + '[[':
         return len(sequence) == 4               # ESC [ [ x: the Linux console's F1-F5
     return '\x40' <= sequence[-1] <= '\x7e'     # ESC [ parameters final: arrows, F5...
+
+
+def pass_keys(talker, fd, wait):
+    """Hand every key read from fd to the talker, escape sequences dropped.
+    `wait(fd, timeout)` (talker.SignalPipe.wait in the node) says when fd is READY
+    to read, or that the timeout passed or shutdown is due. Returns at the
+    end of input or at shutdown."""
+    decoder = KeyDecoder()
+    while True:
+        event = wait(fd, ESCAPE_WAIT if decoder.pending else None)
+        if event == SHUTDOWN:
+            return
+        if event == TIMED_OUT:
+            decoder.timeout()
+            continue
+        data = os.read(fd, READ_SIZE)
+        if not data:
+            return
+        for key in decoder.feed(data):
+            talker.press(key)

@@ -233,5 +233,4 @@ class StallWatch:
 
 
 EXECUTORS = {'timed': TimedExecutor, 'feedback': FeedbackExecutor}
-MODES = ('timed', 'feedback', 'smooth')
 CLOCKS = ('sim', 'wall')

@@ -126,18 +126,11 @@ def glyph_for(char: str, font: Font = BUILTIN) -> Optional[Glyph]:
     return font.glyph(char)
 
 
-def undrawable(text: str, font: Font = BUILTIN) -> List[str]:
-    """The characters of `text` with no glyph (spaces are fine: they advance)."""
-    return font.undrawable(text)
-
-
 def largest_size(font: Font = BUILTIN) -> float:
     """The largest letter height at which the font's widest glyph fits."""
     return (WORLD_SIZE - 2 * MARGIN) / max(font.ascent + font.descent,
                                            font.widest + 2 * font.overhang)
 
-
-LARGEST_SIZE = largest_size(BUILTIN)
 
 
 class Layout:

@@ -10,7 +10,8 @@ import yaml
 
 from .font import BUILTIN
 from .hershey import FontError, load_font
-from .motion import CLOCKS, MODES
+from .drawing import MODES
+from .motion import CLOCKS
 from .plan import MARGIN, TURN_DIRECTIONS, WORLD_SIZE, largest_size
 
 

@@ -18,14 +18,12 @@ import rospy
 from std_msgs.msg import String
 
 from .jobs import TYPED_AHEAD
-from .keys import ESCAPE_WAIT, KeyDecoder, message_for
+from .keys import READY, SHUTDOWN, TIMED_OUT, message_for, pass_keys
 from .liveness import refuse_a_second
 from .settings import ParameterError, quote_unreadable, read_parameter
 
 WAKE_UP = 0.5   # s: how often a blocked wait looks whether ROS shut the node down
 KEPT_PRESSES = 32   # presses kept while nobody subscribes; later ones are dropped
-READ_SIZE = 4096    # bytes read at once; each read is handled before the next
-READY, TIMED_OUT, SHUTDOWN = 'ready', 'timed out', 'shutdown'
 
 
 class SignalPipe:
@@ -119,26 +117,6 @@ class Talker(rospy.SubscribeListener):
         for message in pending:
             peer_publish(String(message))
             rospy.loginfo('Published kept %r on %s', message, topic_name)
-
-
-def pass_keys(talker, fd, wait):
-    """Hand every key read from fd to the talker, escape sequences dropped.
-    `wait(fd, timeout)` (SignalPipe.wait in the node) says when fd is READY
-    to read, or that the timeout passed or shutdown is due. Returns at the
-    end of input or at shutdown."""
-    decoder = KeyDecoder()
-    while True:
-        event = wait(fd, ESCAPE_WAIT if decoder.pending else None)
-        if event == SHUTDOWN:
-            return
-        if event == TIMED_OUT:
-            decoder.timeout()
-            continue
-        data = os.read(fd, READ_SIZE)
-        if not data:
-            return
-        for key in decoder.feed(data):
-            talker.press(key)
 
 
 def read_terminal(talker, fd, prompt, signals):

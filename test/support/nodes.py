@@ -198,10 +198,10 @@ class PoseRecorder:
             return moving and time.time() - moving[-1] > quiet_for
         wait_until(ended, timeout, what)
 
-    def wait_until_still(self, t0, timeout, still_for=1.5):
+    def wait_until_still(self, t0, timeout, still_for=1.5, what='the turtle to move and then stop'):
         """Motion after t0, then `still_for` s without any; fails otherwise."""
         def still():
             moved = [t for t, m in self.poses[-500:]
                      if t >= t0 and (m.linear_velocity or m.angular_velocity)]
             return moved and time.time() - moved[-1] > still_for
-        wait_until(still, timeout, 'the turtle to move and then stop')
+        wait_until(still, timeout, what)

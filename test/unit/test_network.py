@@ -1,5 +1,5 @@
 """check_network.py's verdict on the host name this machine advertises."""
-from turtle_letters.network import host_verdict
+from turtle_letters.hosts import host_verdict
 
 LOCAL = ['127.0.0.1', '198.51.100.2']
 

@@ -9,13 +9,14 @@ import pytest
 
 from turtle_letters.settings import PARAMETERS, Settings, launch_value
 
+
 ROOT = os.path.join(os.path.dirname(__file__), '..', '..')
 LAUNCH = ET.parse(os.path.join(ROOT, 'launch', 'draw_letter.launch')).getroot()
 CONTROLLER = LAUNCH.find("node[@type='turtle_controller.py']")
 ARGS = {a.get('name'): a for a in LAUNCH.findall('arg')}
 PARAMS = {p.get('name'): p for p in CONTROLLER.findall('param')}
 CHECK = PARAMS['checked_settings'].get('command')
-with open(os.path.join(ROOT, 'README.md')) as f:
+with open(os.path.join(ROOT, 'doc', 'reference.md')) as f:
     README = f.read()
 
 
@@ -41,11 +42,15 @@ def test_the_defaults_are_valid():
 @pytest.mark.parametrize('p', PARAMETERS, ids=lambda p: p.name)
 def test_the_launch_file_has_an_argument_and_a_checked_parameter(p):
     assert ARGS[p.name].get('default') == p.default
-    assert ARGS['raw_' + p.name].get('value') == f'str:$(arg {p.name})'
-    assert f"' {p.name}=' + arg('raw_{p.name}')" in CHECK
+    assert p.name in ARGS['parameters'].get('value').split()
     param = PARAMS[p.name]
     assert param.get('value') == f'$(arg {p.name})'
     assert param.get('type') == ('str' if p.type == 'str' else None)
+
+
+def test_the_check_is_given_every_parameter_and_nothing_else():
+    assert "map(arg, arg('parameters').split())" in CHECK
+    assert sorted(ARGS['parameters'].get('value').split()) == sorted(p.name for p in PARAMETERS)
 
 
 def test_the_controller_has_no_parameter_outside_the_table():
@@ -76,12 +81,10 @@ STUDENT = ET.parse(os.path.join(ROOT, 'launch', 'student.launch')).getroot()
 STUDENT_DEFAULTS = {'letter': "$(eval str(arg('name'))[:1].upper())", 'size': '1.0'}
 
 
-@pytest.mark.parametrize('p', PARAMETERS, ids=lambda p: p.name)
-def test_student_launch_takes_every_argument_and_passes_it_on(p):
-    passed = {a.get('name'): a.get('value') for a in STUDENT.find('include').findall('arg')}
+def test_student_launch_passes_every_argument_on_and_sets_two_defaults_of_its_own():
+    include = STUDENT.find('include')
+    assert include.get('pass_all_args') == 'true'
+    assert {a.get('name'): a.get('value') for a in include.findall('arg')} == {
+        'simulator': 'false', 'turtle': '/$(arg name)'}
     declared = {a.get('name'): a.get('default') for a in STUDENT.findall('arg')}
-    if p.name == 'turtle':          # the student's name is the turtle's
-        assert passed['turtle'] == '/$(arg name)'
-        return
-    assert passed[p.name] == f'$(arg {p.name})'
-    assert declared[p.name] == STUDENT_DEFAULTS.get(p.name, p.default)
+    assert declared == dict(STUDENT_DEFAULTS, name=None)

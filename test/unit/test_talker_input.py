@@ -4,7 +4,7 @@ import os
 import select
 import threading
 
-from turtle_letters.talker import READY, SHUTDOWN, TIMED_OUT, pass_keys
+from turtle_letters.keys import READY, SHUTDOWN, TIMED_OUT, pass_keys
 
 
 class Presses:

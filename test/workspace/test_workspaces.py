@@ -1,5 +1,5 @@
 """Builds as users make them, each in a workspace of its own: a turtlesim in
-an underlay workspace, switching simulators both ways, the README's recipe
+an underlay workspace, switching simulators both ways, doc/install.md's recipe
 for your own catkin workspace, and launching from its install space.
 
 Slow (several catkin builds), so `make test` runs these last. They need the
@@ -104,11 +104,11 @@ def test_a_turtlesim_in_an_underlay_is_used_and_switching_leaves_nothing_stale(h
 
 
 def recipe():
-    """The README's own-workspace recipe, line by line."""
-    with open(os.path.join(REPO, 'README.md')) as f:
+    """doc/install.md's own-workspace recipe, line by line."""
+    with open(os.path.join(REPO, 'doc', 'install.md')) as f:
         text = f.read()
     block = re.search(r'<!-- recipe: own workspace -->\n```bash\n(.*?)```', text, re.S)
-    assert block, 'the README has no own-workspace recipe'
+    assert block, 'doc/install.md has no own-workspace recipe'
     return block.group(1).strip().splitlines()
 
 

@@ -68,7 +68,8 @@ class TurtlesimContract(unittest.TestCase):
 
     def test_01_types_have_the_real_md5sums(self):
         for msg_type, md5 in REAL_MD5.items():
-            self.assertEqual(msg_type._md5sum, md5, msg_type._type)
+            with self.subTest(type=msg_type._type):
+                self.assertEqual(msg_type._md5sum, md5)
 
     def test_02_starts_with_turtle1_at_the_centre_and_default_background(self):
         p = pose()

@@ -1,0 +1,96 @@
+"""One turtle and the lab's calls on it: rotate(degrees) and move(meters),
+the lab's timed primitives; steer(primitive) and glide(points) for the other
+modes; pen(down). Each runs one command per pose that turtlesim publishes
+(its 16 ms tick is the clock), through a TurtleDriver, and ends with a stop."""
+import math
+import time
+
+import rospy
+
+from .diagnosis import STALL_SECONDS, stall_diagnosis
+from .driver import DrawingAborted
+from .motion import STOP, FeedbackExecutor, SmoothExecutor, StallWatch, TimedExecutor
+from .plan import Line, Turn, wrap
+from .settings import DEFAULT_PEN
+
+
+class Turtle:
+    """The controller's own turtle, or a spare one of a parallel word
+    (`label` is said before each of its log lines)."""
+
+    def __init__(self, driver, settings, label=''):
+        self.driver = driver
+        self.settings = settings
+        self.label = label
+        # turtlesim's pen starts down in its default colour: a call is needed
+        # only for another colour, or once the pen may have been left up
+        self.pen_is_down = settings.pen == DEFAULT_PEN
+
+    def rotate(self, degrees):
+        """Turn in place by `degrees` (counter-clockwise positive), timed."""
+        pose = self._fresh_pose()
+        angle = math.radians(degrees)
+        self._timed(Turn(angle, wrap(pose.theta + angle)), f'rotate {degrees:.1f} deg')
+
+    def move(self, meters):
+        """Drive `meters` straight ahead, timed."""
+        pose = self._fresh_pose()
+        self._timed(Line(meters, pose.x + meters * math.cos(pose.theta),
+                         pose.y + meters * math.sin(pose.theta), pose.theta),
+                    f'move {meters:.3f} m')
+
+    def steer(self, primitive):
+        """Reach the primitive's end, closed loop on the pose."""
+        self._fresh_pose()
+        s = self.settings
+        what = (f'rotate {math.degrees(primitive.angle):.1f} deg' if isinstance(primitive, Turn)
+                else f'move {primitive.length:.3f} m')
+        self._run(FeedbackExecutor(primitive, s.linear_speed, s.angular_speed), what)
+
+    def glide(self, points):
+        """Smooth mode: trace the polyline through `points` without stopping."""
+        if points:
+            self._fresh_pose()
+            self._run(SmoothExecutor(points, self.settings.linear_speed),
+                      f'glide through {len(points)} points')
+
+    def pen(self, down):
+        self.driver.set_pen(self.settings.pen, down)
+        self.pen_is_down = down
+
+    def pen_down(self):
+        """Before a drawing: the pen down in our colour, unless it surely is."""
+        if not self.pen_is_down:
+            self.pen(True)
+
+    def _timed(self, primitive, description):
+        s = self.settings
+        self._run(TimedExecutor(primitive, s.linear_speed, s.angular_speed, s.clock), description)
+
+    def _fresh_pose(self):
+        pose = self.driver.poses.wait()
+        self.driver.poses.drop_stale()      # they would count ticks that are not ours
+        return pose
+
+    def _run(self, executor, description):
+        """One command per pose until the executor is done, then a stop. A
+        turtle that does not do as told for STALL_SECONDS stops the drawing."""
+        driver = self.driver
+        rospy.loginfo('%s%s: start at %s', self.label, description, pose_text(driver.poses.latest))
+        watch = StallWatch(STALL_SECONDS)
+        command = executor.start(driver.poses.latest)
+        while command is not None:
+            driver.publish(command)
+            watch.sent(command)
+            pose = driver.poses.next()
+            if watch.stalled(pose, time.monotonic()):
+                raise DrawingAborted(stall_diagnosis(driver, pose))
+            command = executor.update(pose)
+        driver.publish(STOP)
+        rospy.loginfo('%s%s: end at %s', self.label, description, pose_text(driver.poses.latest))
+
+
+def pose_text(pose):
+    if pose is None:
+        return '(no pose)'
+    return f'x={pose.x:.4f} y={pose.y:.4f} theta={pose.theta:.4f}'
