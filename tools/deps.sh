@@ -15,7 +15,7 @@ else
   # simulator comes bundled, since Debian has no turtlesim.
   WANT="$COMMON ros-core-dev python3-rospy python3-rostest python3-roslaunch python3-rostopic
         python3-rosservice rosout python3-std-msgs python3-std-srvs python3-geometry-msgs
-        ros-std-srvs libstd-srvs-dev rosbash rospack-tools"
+        ros-std-srvs libstd-srvs-dev rosbash rospack-tools python3-svgelements"
 fi
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
@@ -26,18 +26,29 @@ if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
   exit 1
 fi
 
+# The SVG reader: Debian packages it; Ubuntu 20.04 does not, so there it
+# comes from PyPI, for the system Python that ROS runs on.
+svgelements_from_pypi() {
+  [ -d /opt/ros/noetic ] || return 0
+  /usr/bin/python3 -c 'import svgelements' 2>/dev/null && return 0
+  echo "make deps: installing svgelements (PyPI) for /usr/bin/python3"
+  $SUDO apt-get install -y -qq python3-pip >/dev/null && $SUDO /usr/bin/python3 -m pip install -q svgelements
+}
+
 missing=""
 for pkg in $WANT; do
   status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
   [ "$status" = "install ok installed" ] || missing="$missing $pkg"
 done
 
+SUDO=""
 if [ -z "$missing" ]; then
+  [ "$(id -u)" = 0 ] || ! command -v sudo >/dev/null || SUDO=sudo
+  svgelements_from_pypi
   echo "make deps: everything needed is installed."
   exit 0
 fi
 
-SUDO=""
 if [ "$(id -u)" != 0 ]; then
   if command -v sudo >/dev/null; then SUDO=sudo; else
     echo "make deps: missing packages:$missing" >&2
@@ -54,3 +65,4 @@ if ! $SUDO apt-get install -y -qq $missing; then
   echo "  Debian 12 (bookworm) and Ubuntu 20.04 with ROS Noetic are supported." >&2
   exit 1
 fi
+svgelements_from_pypi

@@ -4,7 +4,15 @@ set -eu
 source "$(dirname "$0")/env.sh"
 source_workspace
 
-args=("$@")
+args=()
+for arg in "$@"; do
+  # roslaunch starts the controller in ROS_HOME: a file is named from here.
+  case "$arg" in
+    svg:=/*|svg:=) ;;
+    svg:=*) arg="svg:=$PWD/${arg#svg:=}" ;;
+  esac
+  args+=("$arg")
+done
 picture=""
 if [ -z "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ "$(cat "$WS/.simulator")" = bundled ]; then
   picture="${TURTLE_LETTERS_PICTURE:-$REPO/.ws/canvas.png}"

@@ -1,6 +1,6 @@
 #!/bin/bash
 # `make test`: unit tests (pytest, no ROS), every rostest through catkin, the
-# network tests (pytest, as root), then the workspace tests (pytest, several
+# network tests (pytest, as root), the doc pages' commands, then the workspace tests (pytest, several
 # catkin builds of their own); ends with
 # one line "N passed, N failed" counted over all of them.
 set -u
@@ -33,6 +33,11 @@ echo "== network tests: a classroom of machines made of network namespaces (root
 mkdir -p "$results/network"
 (cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
   --junitxml="$results/network/pytest.xml" test/network) || status=1
+
+echo "== doc commands: every command of the README and doc/ pages, run as written"
+mkdir -p "$results/doc"
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -p no:cacheprovider \
+  --junitxml="$results/doc/pytest.xml" test/doc) || status=1
 
 echo "== workspace tests: underlay, switching simulators, doc/install.md's recipe, install space"
 mkdir -p "$results/workspace"

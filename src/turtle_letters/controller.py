@@ -8,7 +8,7 @@ import rospy
 from std_msgs.msg import String
 
 from .diagnosis import POSE_PATIENCE, why_stopped
-from .drawing import MODES, Progress, plan_text
+from .drawing import MODES, Progress, SvgFile, plan_request
 from .driver import TurtleDriver
 from .jobs import TYPED_AHEAD, Jobs, chatter_request, text_request
 from .liveness import refuse_a_second
@@ -17,6 +17,7 @@ from .placement import Placement, Refused
 from .plan import DoesNotFit, PlannedPose, shown
 from .settings import ParameterError, Settings, quote_unreadable
 from .sheet import Sheet
+from .svgart import SvgError
 from .turtle import Turtle, pose_text
 
 IGNORED_LOG_PERIOD = 10.0   # s: an ignored message is said once, then at most this often
@@ -26,8 +27,8 @@ THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
 class TurtleController:
     """The lab's class. On the trigger ("P" on `chatter`) its turtle draws
     `~letter` (N), in `~mode` (timed: the lab's rotate and move). Also draws
-    `~text` (std_msgs/String) and, in typing mode, every key. Parameters:
-    settings.PARAMETERS."""
+    `~text` and `~svg` (std_msgs/String) and, in typing mode, every key.
+    Parameters: settings.PARAMETERS."""
 
     def draw_the_labs_n(self):
         """The lab's N in the lab's own words. "P" draws exactly this: the
@@ -51,9 +52,13 @@ class TurtleController:
         rospy.on_shutdown(self.leave)
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=TYPED_AHEAD)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
+        rospy.Subscriber('~svg', String, lambda m: self.request(SvgFile(m.data), '~svg'),
+                         queue_size=10)
         threading.Thread(target=self._work, name='drawing', daemon=True).start()
         if settings.text:
             self.request(settings.text, 'the ~text parameter')
+        if settings.svg:
+            self.request(SvgFile(settings.svg), 'the ~svg parameter')
 
     def _on_chatter(self, msg):
         s = self.settings
@@ -87,49 +92,44 @@ class TurtleController:
 
     def _work(self):
         self.placement.placed.wait()
-        while not rospy.is_shutdown():
-            text = self.jobs.take(timeout=0.5)
-            if text is None:
-                continue
+        for request in self.jobs.each(rospy.is_shutdown):
             try:
-                self.draw(text)
-            except DoesNotFit as e:
+                self.draw(request)
+            except (DoesNotFit, SvgError) as e:
                 rospy.logerr('Refused: %s', e)
             except Exception as e:  # whatever it was, this thread must live on
-                self._abandon(text, e)
+                self._abandon(request, e)
             finally:
                 self.jobs.done()
 
-    def draw(self, text):
-        """Draw `text` at the next free places on the canvas (or our part)."""
+    def draw(self, request):
+        """Draw a text, or an SVG file, at the next free place on the canvas (or our part)."""
         self.placement.respawn_if_gone()
         pose = self.driver.poses.wait(patience=POSE_PATIENCE)
         start = PlannedPose(pose.x, pose.y, pose.theta)
-        places, must_clear = self.sheet.reserve(text, start)
+        job = plan_request(request, self.sheet, start, self.settings)
         self.placement.note_cursor()
-        chars = [(c, p) for c, p in zip(text, places) if p is not None]
-        plan = plan_text(text, places, start, self.settings)
-        rospy.loginfo('Drawing %r (%s mode%s): ink %.2f m, travel %.2f m, about %.0f s', text,
-                      self.settings.mode, ', in parallel' * self.settings.parallel, plan.ink,
-                      plan.travel, plan.seconds)
-        if must_clear:
+        if job.note:
+            rospy.logwarn('%s', job.note)
+        rospy.loginfo('Drawing %s', job.summary(self.settings))
+        if job.must_clear:
             self.placement.make_room()
-        if self.settings.parallel and len(chars) > 1:
-            draw_in_parallel(self.turtle, self.spares, chars)
+        if self.settings.parallel and len(job.chars) > 1:
+            draw_in_parallel(self.turtle, self.spares, job.chars)
         else:
             self.turtle.pen_down()
-            MODES[self.settings.mode].carry_out(plan, self.turtle, Progress(rospy.loginfo))
-        rospy.loginfo('Done drawing %r; the turtle is at %s', text,
+            MODES[self.settings.mode].carry_out(job.plan, self.turtle, Progress(rospy.loginfo))
+        rospy.loginfo('Done drawing %s; the turtle is at %s', job.label,
                       pose_text(self.driver.poses.latest))
 
-    def _abandon(self, text, error):
+    def _abandon(self, request, error):
         """Stop the turtle, and forget the layout and the pen: the simulator may
         come back with a fresh canvas, so the next drawing starts afresh."""
         self.driver.stop()
         self.sheet.forget()
         self.turtle.pen_is_down = False
-        rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.', text,
-                     why_stopped(error, self.driver))
+        rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.',
+                     getattr(request, 'path', request), why_stopped(error, self.driver))
 
 
 def main():

@@ -13,10 +13,11 @@ turtle.Turtle is one such turtle; the unit tests' recorder is another.
 """
 import math
 import time
-from typing import List, NamedTuple
+from typing import List, NamedTuple, Optional
 
+from . import svgart
 from .font import BUILTIN
-from .plan import SAME_POINT, Line, Pen, Turn, plan_strokes, word_strokes
+from .plan import SAME_POINT, Line, Pen, Turn, plan_strokes, shown, word_strokes
 from .route import ink_length, order_strokes, travel_length
 
 
@@ -27,6 +28,43 @@ class Plan(NamedTuple):
     ink: float              # m drawn
     travel: float           # m with the pen up
     seconds: float          # how long it should take
+    colours: Optional[list] = None  # a picture's: each stroke's pen colour (None: ~pen)
+
+
+class SvgFile(NamedTuple):
+    """A request to draw an SVG file's line art (a text request is a str)."""
+    path: str
+
+
+class Planned(NamedTuple):
+    plan: Plan
+    chars: list             # (character, place) of a text: a parallel word's
+    must_clear: bool        # the canvas (or part) is full: start again
+    label: str              # what is drawn, for the log
+    note: str               # something to say about it, or ''
+
+    def summary(self, settings):
+        """What the drawing's first log line says after "Drawing"."""
+        p = self.plan
+        return (f'{self.label} ({settings.mode} mode{", in parallel" * settings.parallel}): '
+                f'ink {p.ink:.2f} m, travel {p.travel:.2f} m, about {p.seconds:.0f} s')
+
+
+def plan_request(request, sheet, start, settings) -> Planned:
+    """A text's or a picture's plan, at the next free place on `sheet`;
+    raises plan.DoesNotFit or svgart.SvgError (then nothing is reserved)."""
+    if isinstance(request, SvgFile):
+        picture = svgart.picture(svgart.read(request.path), settings.size)
+        name = shown(request.path.rsplit('/', 1)[-1])
+        place, must_clear = sheet.reserve_picture(picture.width / settings.size, name, start)
+        note = (f'{name}: {picture.texts} text element(s) not drawn (text in an SVG is not '
+                'line art)' if picture.texts else '')
+        return Planned(plan_picture(picture, place, start, settings), [], must_clear,
+                       f'{name}, {len(picture.strokes)} strokes', note)
+    places, must_clear = sheet.reserve(request, start)
+    chars = [(c, p) for c, p in zip(request, places) if p is not None]
+    return Planned(plan_text(request, places, start, settings), chars, must_clear,
+                   repr(request), '')
 
 
 def plan_text(text, places, start, settings) -> Plan:
@@ -34,14 +72,32 @@ def plan_text(text, places, start, settings) -> Plan:
     from `start` (a PlannedPose). A Hershey font's strokes go in the order and
     direction that travels least with the pen up; the builtin font's keep the
     order and direction they are drawn in (so every N is the lab's N)."""
-    s = settings
+    strokes = word_strokes(text, places, settings.size, settings.font)
+    if settings.font is not BUILTIN:
+        strokes = order_strokes(strokes, (start.x, start.y))
+    return _plan(strokes, None, start, settings)
+
+
+def plan_picture(picture, place, start, settings) -> Plan:
+    """A picture (svgart.Picture) with its lower left corner at `place`: its
+    strokes a colour at a time, each colour's in the order that travels least."""
+    here, strokes, colours = (start.x, start.y), [], []
+    for colour in dict.fromkeys(picture.colours):        # in the order they come
+        mine = [[(place[0] + x, place[1] + y) for x, y in stroke]
+                for stroke, c in zip(picture.strokes, picture.colours) if c == colour]
+        mine = order_strokes(mine, here)
+        strokes += mine
+        colours += [colour] * len(mine)
+        here = mine[-1][-1]
+    return _plan(strokes, colours, start, settings)
+
+
+def _plan(strokes, colours, start, settings):
     here = (start.x, start.y)
-    strokes = word_strokes(text, places, s.size, s.font)
-    if s.font is not BUILTIN:
-        strokes = order_strokes(strokes, here)
-    primitives, _ = plan_strokes(strokes, start, s.turn_direction)
-    plan = Plan(here, strokes, primitives, ink_length(strokes), travel_length(strokes, here), 0.0)
-    return plan._replace(seconds=MODES[s.mode].seconds(plan, s))
+    primitives, _ = plan_strokes(strokes, start, settings.turn_direction, colours)
+    plan = Plan(here, strokes, primitives, ink_length(strokes), travel_length(strokes, here), 0.0,
+                colours)
+    return plan._replace(seconds=MODES[settings.mode].seconds(plan, settings))
 
 
 class Timed:
@@ -78,12 +134,15 @@ class Smooth:
         return (plan.ink + plan.travel) / settings.linear_speed
 
     def carry_out(self, plan, turtle, progress):
-        here, drawn = plan.start, 0.0
-        for stroke in plan.strokes:
+        here, drawn, ink = plan.start, 0.0, None
+        for stroke, colour in zip(plan.strokes, plan.colours or [None] * len(plan.strokes)):
             if math.hypot(stroke[0][0] - here[0], stroke[0][1] - here[1]) > SAME_POINT:
                 turtle.pen(False)
                 turtle.glide(stroke[:1])
-                turtle.pen(True)
+                turtle.pen(True, colour)
+            elif colour != ink:
+                turtle.pen(True, colour)
+            ink = colour
             turtle.glide(stroke[1:])
             here = stroke[-1]
             drawn += ink_length([stroke])
@@ -98,7 +157,7 @@ def _each_primitive(plan, turtle, step, progress):
     pen_down, drawn = True, 0.0
     for primitive in plan.primitives:
         if isinstance(primitive, Pen):
-            turtle.pen(primitive.down)
+            turtle.pen(primitive.down, primitive.colour)
             pen_down = primitive.down
             continue
         step(primitive)

@@ -56,6 +56,13 @@ class Jobs:
             self._drawing = True
             return self._waiting.popleft()
 
+    def each(self, stopped, timeout: float = 0.5):
+        """Each request in turn (call done() after each), until `stopped()`."""
+        while not stopped():
+            request = self.take(timeout)
+            if request is not None:
+                yield request
+
     def done(self) -> None:
         with self._changed:
             self._drawing = False

@@ -33,6 +33,7 @@ class Line(NamedTuple):
 
 class Pen(NamedTuple):
     down: bool
+    colour: Optional[Tuple[int, int, int]] = None     # when down: None is the node's ~pen
 
 
 class PlannedPose(NamedTuple):
@@ -91,9 +92,10 @@ def glyph_strokes(glyph: Glyph, origin: Tuple[float, float], size: float):
     return [[(ox + size * gx, oy + size * gy) for gx, gy in stroke] for stroke in glyph.strokes]
 
 
-def plan_strokes(strokes, start: PlannedPose, direction: str = 'ccw'):
+def plan_strokes(strokes, start: PlannedPose, direction: str = 'ccw', colours=None):
     """Primitives that draw `strokes` (in meters) in this order, starting
-    from the turtle's `start` pose; returns them and the end pose.
+    from the turtle's `start` pose; returns them and the end pose. `colours`
+    (a picture's): each stroke's pen colour, None for the node's own.
 
     The pen is lifted only to travel to a stroke that does not start where
     the turtle is, so the lab's N from its start point is exactly the lab's
@@ -101,10 +103,14 @@ def plan_strokes(strokes, start: PlannedPose, direction: str = 'ccw'):
     """
     primitives = []
     pose = start
-    for stroke in strokes:
+    ink = None
+    for stroke, colour in zip(strokes, colours or [None] * len(strokes)):
         if math.hypot(stroke[0][0] - pose.x, stroke[0][1] - pose.y) > SAME_POINT:
             travel, pose = path(stroke[:1], pose, direction)
-            primitives += [Pen(False)] + travel + [Pen(True)]
+            primitives += [Pen(False)] + travel + [Pen(True, colour)]
+        elif colour != ink:
+            primitives.append(Pen(True, colour))
+        ink = colour
         drawn, pose = path(stroke[1:], pose, direction)
         primitives += drawn
     return primitives, pose
@@ -188,6 +194,12 @@ class Layout:
         whether the canvas must be cleared first; raises DoesNotFit."""
         font = self.font
         widths = [font.space_width if c == ' ' else font.glyph(c).width for c in text]
+        placed, cleared = self.reserve_widths(widths, shown(text), 'characters')
+        return [None if c == ' ' else p for c, p in zip(text, placed)], cleared
+
+    def reserve_widths(self, widths: List[float], what: str, units: str):
+        """Places for boxes of these widths (letter heights) and whether the
+        canvas must be cleared first; raises DoesNotFit, naming `what`."""
         placed, cursor = self.places(widths, self.cursor)
         cleared = False
         if placed is None:
@@ -196,7 +208,7 @@ class Layout:
             if placed is None:
                 where = 'on the canvas' if self.bounds is None else "in the turtle's part of the canvas"
                 raise DoesNotFit(
-                    f'{shown(text)} does not fit {where} at size {self.size:g} m: '
-                    f'at most {self.how_many_fit(widths)} of its {len(text)} characters fit')
+                    f'{what} does not fit {where} at size {self.size:g} m: '
+                    f'at most {self.how_many_fit(widths)} of its {len(widths)} {units} fit')
         self.cursor = cursor
-        return [None if c == ' ' else p for c, p in zip(text, placed)], cleared
+        return placed, cleared

@@ -3,6 +3,7 @@ one place. No ROS here: the node passes rospy.get_param in, and the launch
 file's check passes the launch arguments, so a bad value is refused before
 anything starts."""
 import math
+import os
 import re
 from typing import Callable, NamedTuple
 
@@ -91,6 +92,19 @@ def student_name_problem(name, read_as='str'):
         return ('a name is letters (a-z, A-Z), digits and _, starting with a letter, '
                 'with no / or accents (the turtle and the namespace are named after it)')
     return None
+
+
+def _svg(value, font=None):
+    """'' or an SVG file that exists, by an absolute path: roslaunch starts a
+    node in ROS_HOME, so a relative path would be looked for there."""
+    if value == '':
+        return ''
+    if not isinstance(value, str) or not os.path.isabs(value):
+        raise ValueError('"" or the absolute path of an SVG file (nodes do not run where '
+                         'roslaunch was started: give $PWD/FILE)')
+    if not os.path.isfile(value):
+        raise ValueError('"" or the path of an SVG file that exists')
+    return value
 
 
 def _place(value, font=None):
@@ -184,6 +198,7 @@ PARAMETERS = (
     Parameter('y', 'float', '', 'm', 'where a spawned turtle starts; "": a free place', _place),
     Parameter('parallel', 'bool', 'false', '',
               'a word is drawn by one turtle per character, all at once', _boolean),
+    Parameter('svg', 'str', '', '', 'an SVG file whose line art is drawn once at start', _svg),
 )
 
 TABLE = {p.name: p for p in PARAMETERS}

@@ -23,6 +23,14 @@ class Sheet:
         """The places of `text`'s characters and whether the canvas must be
         cleared first (a part: started again); raises plan.DoesNotFit (then
         nothing was reserved). `where`: the turtle's pose, for the lab."""
+        return self._layout_from(where).reserve(text)
+
+    def reserve_picture(self, width, name, where):
+        """The place of a picture `width` letter heights wide, as reserve() does."""
+        places, cleared = self._layout_from(where).reserve_widths([width], name, 'pictures')
+        return places[0], cleared
+
+    def _layout_from(self, where):
         if self._layout is None:
             if self.part is None:
                 self._layout = Layout((where.x, where.y), self.size, self.font)
@@ -30,7 +38,7 @@ class Sheet:
                 self._layout = Layout(self.part[0], self.size, self.font, bounds=self.part[1])
                 if self._resume_at is not None:
                     self._layout.cursor = self._resume_at
-        return self._layout.reserve(text)
+        return self._layout
 
     @property
     def cursor(self):

@@ -54,9 +54,11 @@ class Turtle:
             self._run(SmoothExecutor(points, self.settings.linear_speed),
                       f'glide through {len(points)} points')
 
-    def pen(self, down):
-        self.driver.set_pen(self.settings.pen, down)
-        self.pen_is_down = down
+    def pen(self, down, colour=None):
+        """Down (in `colour`, r g b, or else ~pen's) or up; ~pen's width always."""
+        pen = self.settings.pen if colour is None else tuple(colour) + self.settings.pen[3:]
+        self.driver.set_pen(pen, down)
+        self.pen_is_down = down and colour is None
 
     def pen_down(self):
         """Before a drawing: the pen down in our colour, unless it surely is."""

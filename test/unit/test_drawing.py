@@ -31,8 +31,8 @@ class Recorder:
     def steer(self, primitive):
         self.calls.append(('steer', type(primitive).__name__))
 
-    def pen(self, down):
-        self.calls.append(('pen', down))
+    def pen(self, down, colour=None):
+        self.calls.append(('pen', down) if colour is None else ('pen', down, colour))
 
     def glide(self, points):
         self.calls.append(('glide', len(points)))

@@ -80,3 +80,14 @@ def test_racing_triggers_are_taken_only_when_nothing_waits_or_is_drawn():
     assert len(taken) == len(accepted) > 1
     assert jobs.idle
     assert jobs.offer('P') and jobs.take(0.1) == 'P'
+
+
+def test_each_hands_out_the_requests_in_turn_until_stopped():
+    jobs = Jobs()
+    jobs.offer_key('A')
+    jobs.offer_key('B')
+    seen = []
+    for request in jobs.each(lambda: len(seen) == 2, timeout=0.01):
+        seen.append(request)
+        jobs.done()
+    assert seen == ['A', 'B']

@@ -8,7 +8,7 @@ import pytest
 SRC = os.path.join(os.path.dirname(__file__), '..', '..', 'src', 'turtle_letters')
 MODULES = sorted(f[:-3] for f in os.listdir(SRC) if f.endswith('.py') and f != '__init__.py')
 PURE = {'drawing', 'font', 'hershey', 'hosts', 'jobs', 'keys', 'motion', 'parts', 'plan',
-        'route', 'settings', 'sheet'}
+        'route', 'settings', 'sheet', 'svgart'}
 ROS = ('rospy', 'rosgraph', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')
 
 
@@ -21,8 +21,10 @@ def imports(module):
     """(our modules, other top-level packages) that `module` imports."""
     ours, others = set(), set()
     for node in ast.walk(tree(module)):
-        if isinstance(node, ast.ImportFrom) and node.level == 1:
-            ours.add((node.module or '').split('.')[0])
+        if isinstance(node, ast.ImportFrom) and node.level == 1 and node.module:
+            ours.add(node.module.split('.')[0])
+        elif isinstance(node, ast.ImportFrom) and node.level == 1:     # from . import x
+            ours.update(a.name for a in node.names)
         elif isinstance(node, ast.ImportFrom):
             others.add(node.module.split('.')[0])
         elif isinstance(node, ast.Import):

@@ -1,0 +1,141 @@
+"""Every command the README and doc/ pages show, run as a reader would type
+it: each launch comes up ready and stops on Ctrl-C, each trigger is heard.
+The few that another test runs (the classroom, on machines of its own; the
+own-workspace recipe; `make test` itself) are named here with that test, and
+a command that neither this test nor another runs fails it."""
+import glob
+import os
+import re
+import signal
+import subprocess
+import tempfile
+import time
+
+import pytest
+
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..'))
+PAGES = ['README.md'] + sorted(os.path.relpath(p, REPO) for p in glob.glob(f'{REPO}/doc/*.md'))
+# Run elsewhere, and where.
+ELSEWHERE = {
+    'make test': 'make test is what runs this test',
+    'rostest turtle_letters draw_letter.test': 'make test runs every rostest',
+    'make bench': 'the benchmark, by hand (about 20 minutes)',
+    'make bench ARGS="--reps 5 --letter K --modes feedback --loads idle --words= --classroom="':
+        'the benchmark, by hand',
+    'make bench ARGS="--modes= --loads idle --words= --classroom 1,10,30"': 'the benchmark, by hand',
+    'export ROS_IP=192.168.1.10 ROS_MASTER_URI=http://192.168.1.10:11311':
+        'test/network: the instructor on a machine of its own',
+    'export ROS_IP=192.168.1.23 ROS_MASTER_URI=http://192.168.1.10:11311':
+        'test/network: a student on a machine of their own',
+    'roslaunch turtle_letters classroom.launch': 'test/network',
+    'roslaunch turtle_letters student.launch name:=alice': 'test/network',
+    "rostopic pub -1 /alice/chatter std_msgs/String \"data: 'P'\"": 'test/network',
+}
+RECIPE = 'doc/install.md'       # test/workspace/test_workspaces.py runs it line by line
+# Sent to a launch, in this order, each with what its controller then says.
+LAB = 'roslaunch turtle_letters draw_letter.launch'
+TRIGGERS = {
+    LAB: [("rostopic pub -1 /chatter std_msgs/String \"data: 'P'\"", "Drawing 'N'"),
+          ("rostopic pub -1 /turtlebot_controller/text std_msgs/String \"data: 'HI'\"",
+           '~text ignored: a drawing is waiting or under way')],
+    f'{LAB} mode:=feedback': [
+        ("rostopic pub -1 /turtlebot_controller/svg std_msgs/String "
+         "\"data: '$PWD/doc/flower.svg'\"", "Drawing 'flower.svg', 9 strokes")],
+}
+
+
+def commands():
+    """(page, command) for every line of every bash block, comments cut."""
+    found = []
+    for page in PAGES:
+        with open(os.path.join(REPO, page)) as f:
+            text = f.read()
+        for block in re.finditer(r'(<!-- recipe: [^>]*-->\n)?```bash\n(.*?)```', text, re.S):
+            if block.group(1) and page == RECIPE:
+                continue
+            for line in block.group(2).strip().splitlines():
+                command = re.sub(r'\s+#.*$', '', line).strip()
+                if command:
+                    found.append((page, command))
+    return found
+
+
+LAUNCHES = sorted({c for _, c in commands()
+                   if c.startswith(('roslaunch turtle_letters draw_letter.launch', 'make run'))})
+
+
+def test_every_command_is_run_here_or_by_the_test_named_for_it():
+    sent = {trigger for triggers in TRIGGERS.values() for trigger, _ in triggers}
+    ours = set(LAUNCHES) | sent | {'source .ws/devel/setup.bash'}
+    orphans = [(page, c) for page, c in commands() if c not in ours and c not in ELSEWHERE]
+    assert orphans == [], 'commands that no test runs'
+
+
+@pytest.fixture
+def master_port():
+    """A master of the test's own (roslaunch starts one), so runs cannot meet."""
+    return 11411 + os.getpid() % 500
+
+
+def environment(port):
+    env = dict(os.environ, ROS_MASTER_URI=f'http://127.0.0.1:{port}', ROS_IP='127.0.0.1',
+               ROS_HOME=tempfile.mkdtemp(prefix='doc_commands_'))
+    env.pop('DISPLAY', None)        # headless, as in CI
+    return env
+
+
+def start(command, env):
+    out = tempfile.NamedTemporaryFile('w+', suffix='.out', delete=False)
+    process = subprocess.Popen(['bash', '-c', command], cwd=REPO, env=env, stdout=out,
+                               stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                               start_new_session=True)
+    process.out_path = out.name
+    return process
+
+
+def output(process):
+    with open(process.out_path, errors='replace') as f:
+        return f.read()
+
+
+def wait_for(process, text, timeout):
+    deadline = time.time() + timeout
+    while time.time() < deadline and process.poll() is None:
+        if text in output(process):
+            return
+        time.sleep(0.2)
+    pytest.fail(f'no {text!r} within {timeout} s:\n{output(process)[-3000:]}')
+
+
+def ctrl_c(process):
+    os.killpg(process.pid, signal.SIGINT)
+    try:
+        return process.wait(30)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.wait()
+        pytest.fail(f'did not stop on Ctrl-C:\n{output(process)[-3000:]}')
+
+
+@pytest.mark.parametrize('command', LAUNCHES)
+def test_the_launch_comes_up_ready_and_stops_on_ctrl_c(command, master_port):
+    launch = start(command, environment(master_port))
+    try:
+        wait_for(launch, 'Ready: publish', 240)
+        for trigger, heard in TRIGGERS.get(command, []):
+            sent = subprocess.run(['bash', '-c', trigger], cwd=REPO, env=environment(master_port),
+                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                  universal_newlines=True, timeout=60)
+            assert sent.returncode == 0, sent.stdout
+            wait_for(launch, heard, 30)
+    finally:
+        ctrl_c(launch)
+    said = output(launch)
+    assert 'Traceback' not in said and '[FATAL]' not in said, said[-3000:]
+
+
+def test_the_workspace_setup_can_be_sourced():
+    done = subprocess.run(['bash', '-c', 'source .ws/devel/setup.bash && rospack find turtle_letters'],
+                          cwd=REPO, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True)
+    assert done.returncode == 0 and done.stdout.strip().endswith('turtle_letters'), done.stdout

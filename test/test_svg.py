@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""An SVG file's line art, sent on the controller's ~svg topic and drawn in
+smooth mode: every vertex of the flattened strokes reached, the path on the
+strokes and the pen-up travel (a late command may run a tick past a vertex,
+as in test_words), and the picture in the file's stroke colours."""
+import math
+import unittest
+
+import rospy
+import rostest
+from PyQt5.QtGui import QColor, QImage
+from std_msgs.msg import String
+from std_srvs.srv import Trigger
+from turtlesim.msg import Pose as PoseMsg
+
+from support.accuracy import distances_off, touches_a_wall, vertex_errors
+from support.nodes import LogWatch, PoseRecorder, wait_until
+from turtle_letters import svgart
+from turtle_letters.drawing import plan_picture
+from turtle_letters.motion import SIM_TICK
+from turtle_letters.plan import PlannedPose
+from turtle_letters.settings import Settings
+from turtle_letters.sheet import Sheet
+
+TOLERANCE = 0.001           # m: the issue's target, for every vertex and every pose
+CONTROLLER = '/turtlebot_controller'
+
+
+def pixel(image, x, y):
+    c = QColor(image.pixel(int(round(x * 45)), int(round(499 - y * 45))))
+    return (c.red(), c.green(), c.blue())
+
+
+class SvgLineArt(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('svg_test')
+        path = rospy.get_param('~svg')
+        settings = Settings(lambda name, default:
+                            rospy.get_param(f'{CONTROLLER}/{name[1:]}', default))
+        logs = LogWatch()
+        first = rospy.wait_for_message('/turtle1/pose', PoseMsg, timeout=30)
+        poses = PoseRecorder()
+        poses.wait_connected()
+        pub = rospy.Publisher(CONTROLLER + '/svg', String, queue_size=1, latch=True)
+        pub.publish(String(path))
+
+        start = PlannedPose(first.x, first.y, first.theta)
+        picture = svgart.picture(svgart.read(path), settings.size)
+        place, _ = Sheet(settings.size, settings.font).reserve_picture(
+            picture.width / settings.size, 'flower', start)
+        cls.plan = plan_picture(picture, place, start, settings)
+        cls.travel, here = [], cls.plan.start
+        for stroke in cls.plan.strokes:
+            cls.travel.append([here, stroke[0]])
+            here = stroke[-1]
+        cls.run_on = 3 * settings.linear_speed * SIM_TICK
+        wait_until(lambda: logs.count('Done drawing', CONTROLLER)
+                   or logs.count('Refused', CONTROLLER), 250, "the controller's Done line")
+        cls.refused = logs.count('Refused', CONTROLLER)
+        poses.wait_until_still(0, 10, still_for=0.5)
+        cls.path = poses.path()
+
+    def test_the_file_is_drawn(self):
+        self.assertEqual(self.refused, 0)
+
+    def test_every_vertex_is_reached(self):
+        vertices = [v for stroke in self.plan.strokes for v in stroke]
+        errors = vertex_errors(self.path, vertices)
+        missed = [(v, round(e * 1000, 2)) for v, e in zip(vertices, errors) if e >= TOLERANCE]
+        self.assertEqual(missed, [], 'vertices missed (m) by mm')
+
+    def test_the_path_keeps_to_the_strokes_and_travel_moves(self):
+        off = distances_off(self.path, self.plan.strokes, self.travel)
+        corners = [v for stroke in self.plan.strokes for v in stroke]
+        unexplained = [(round(p[0], 3), round(p[1], 3), round(d * 1000, 2))
+                       for p, d in zip(self.path, off) if d >= TOLERANCE
+                       and min(math.dist(p, c) for c in corners) > self.run_on]
+        self.assertEqual(unexplained, [], 'poses off the strokes (mm) away from any vertex')
+        self.assertLess(max(off), self.run_on)
+        self.assertFalse(touches_a_wall(self.path))
+
+    def test_the_picture_has_the_files_stroke_colours(self):
+        saved = rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)()
+        self.assertTrue(saved.success, saved.message)
+        image = QImage(saved.message)
+        turtle = self.path[-1]          # its icon covers the ink under it
+        for stroke, colour in zip(self.plan.strokes, self.plan.colours):
+            a, b = max(zip(stroke, stroke[1:]), key=lambda ab: math.dist(*ab))   # its longest edge
+            mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+            if math.dist(mid, turtle) > 0.5:
+                with self.subTest(stroke=stroke[0]):
+                    self.assertEqual(pixel(image, *mid), colour)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('turtle_letters', 'svg', SvgLineArt)
