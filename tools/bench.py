@@ -60,6 +60,8 @@ SIM_RATE_HZ = 62.5
 MODES = {'timed': ('_mode:=timed', '_clock:=sim'), 'timed-wall': ('_mode:=timed', '_clock:=wall'),
          'feedback': ('_mode:=feedback',), 'smooth': ('_mode:=smooth',)}
 WORD = 'Hello, World!'
+SVG = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'doc',
+                                   'flower.svg'))
 WORD_FONTS = ('futural', 'scripts')
 
 
@@ -156,31 +158,61 @@ def word_run(processes, recorder, font, size=1.0, speed=1.0):
     """WORD in a Hershey font, smooth mode, from the ~text topic."""
     from turtle_letters.drawing import plan_text
     from turtle_letters.route import travel_length
-    from turtle_letters.settings import Settings
     from turtle_letters.sheet import Sheet
+    settings = smooth_settings(font, size, speed)
+    commands, poses = smooth_run(processes, recorder, settings, '/text', WORD)
+    start = PlannedPose(5.544445, 5.544445, 0.0)
+    places = Sheet(size, settings.font).reserve(WORD, start)[0]
+    plan = plan_text(WORD, places, start, settings)
+    reading = word_strokes(WORD, places, size, settings.font)
+    return dict(measure(plan, commands, poses, speed), font=font,
+                reading_travel_m=travel_length(reading, plan.start))
+
+
+def svg_run(processes, recorder, size=3.0, speed=1.0):
+    """doc/flower.svg, smooth mode, from the ~svg topic."""
+    from turtle_letters import svgart
+    from turtle_letters.drawing import plan_picture
+    from turtle_letters.sheet import Sheet
+    settings = smooth_settings('builtin', size, speed)
+    commands, poses = smooth_run(processes, recorder, settings, '/svg', SVG)
+    start = PlannedPose(5.544445, 5.544445, 0.0)
+    picture = svgart.picture(svgart.read(SVG), size)
+    place, _ = Sheet(size, settings.font).reserve_picture(picture.width / size, 'flower', start)
+    return measure(plan_picture(picture, place, start, settings), commands, poses, speed)
+
+
+def smooth_settings(font, size, speed):
+    from turtle_letters.settings import Settings
+    return Settings(lambda name, default: {
+        '~font': font, '~size': size, '~mode': 'smooth', '~linear_speed': speed}.get(name, default))
+
+
+def smooth_run(processes, recorder, settings, topic, data):
+    """A controller in smooth mode draws what `data` on its `topic` asks; the
+    commands and poses of the drawing."""
     rospy.ServiceProxy('/reset', Empty)()
     forget_controller_parameters()
     controller = processes.start(
         'controller', 'rosrun', 'turtle_letters', 'turtle_controller.py', '_mode:=smooth',
-        f'_font:={font}', f'_size:={size}', f'_linear_speed:={speed}')
-    text = rospy.Publisher(CONTROLLER + '/text', String, queue_size=1)
+        f'_font:={settings.font.name}', f'_size:={settings.size}',
+        f'_linear_speed:={settings.linear_speed}')
+    request = rospy.Publisher(CONTROLLER + topic, String, queue_size=1)
     try:
-        wait_until(lambda: text.get_num_connections() > 0, 30, 'the controller on ~text')
+        wait_until(lambda: request.get_num_connections() > 0, 30, 'the controller on ' + topic)
         wait_for_controller_connections(recorder)
         recorder.reset()
-        text.publish(String(WORD))
-        recorder.wait_until_commands_end(600, 'the word to be drawn')
+        request.publish(String(data))
+        recorder.wait_until_commands_end(600, 'the drawing')
         with recorder.lock:
-            commands = list(recorder.commands)
-            poses = [p for _, p in recorder.poses]
+            return list(recorder.commands), [p for _, p in recorder.poses]
     finally:
-        text.unregister()
+        request.unregister()
         processes.stop(controller)
-    settings = Settings(lambda name, default: {
-        '~font': font, '~size': size, '~mode': 'smooth', '~linear_speed': speed}.get(name, default))
-    start = PlannedPose(5.544445, 5.544445, 0.0)
-    places = Sheet(size, settings.font).reserve(WORD, start)[0]
-    plan = plan_text(WORD, places, start, settings)
+
+
+def measure(plan, commands, poses, speed):
+    """Time against (ink + travel) / speed; how far the poses and vertices are off."""
     travel_moves, here = [], plan.start
     for stroke in plan.strokes:
         travel_moves.append([here, stroke[0]])
@@ -188,16 +220,13 @@ def word_run(processes, recorder, font, size=1.0, speed=1.0):
     allowed = plan.strokes + travel_moves
     path = [(p.x, p.y) for p in poses]
     moving = [t for t, m in commands if m]
-    drawing = max(moving) - min(moving)
-    reading = word_strokes(WORD, places, size, settings.font)
     return {
-        'font': font, 'drawing_s': drawing, 'ideal_s': (plan.ink + plan.travel) / speed,
+        'drawing_s': max(moving) - min(moving), 'ideal_s': (plan.ink + plan.travel) / speed,
         'path_max_mm': max(min(distance_to_polyline(q, s) if len(s) > 1 else
                                math.hypot(q[0] - s[0][0], q[1] - s[0][1]) for s in allowed)
                            for q in path) * 1000,
         'vertex_max_mm': max(vertex_errors(path, [v for s in plan.strokes for v in s])) * 1000,
         'ink_m': plan.ink, 'travel_m': plan.travel,
-        'reading_travel_m': travel_length(reading, plan.start),
     }
 
 
@@ -251,17 +280,21 @@ def limit_for(key, mode, load):
 
 
 def word_lines(results):
-    """Smooth mode on a real word: time against (ink + travel) / speed, accuracy, travel."""
+    """Smooth mode on a real word and on line art: time against (ink + travel) /
+    speed, accuracy, travel."""
     lines = []
-    for w in results.get('words', []):
+    drawings = [(f"{WORD!r} in {w['font']:8}", w) for w in results.get('words', [])]
+    drawings += [('doc/flower.svg        ', w) for w in results.get('svg', [])]
+    for what, w in drawings:
         late = w['drawing_s'] / w['ideal_s'] - 1
         lines.append(
-            f"{WORD!r} in {w['font']:8} {w['load']:7} smooth: "
+            f"{what} {w['load']:7} smooth: "
             f"{w['drawing_s']:.1f} s{'!' if late > 0.10 else ''} against {w['ideal_s']:.1f} s "
             f"(ink + travel at speed, {100 * late:+.0f}%); worst pose "
             f"{w['path_max_mm']:.2f}{'!' if w['path_max_mm'] > 1 else ''} mm, worst vertex "
             f"{w['vertex_max_mm']:.2f}{'!' if w['vertex_max_mm'] > 1 else ''} mm; travel "
-            f"{w['travel_m']:.1f} m, {w['reading_travel_m']:.1f} m in reading order")
+            f"{w['travel_m']:.1f} m" + (f", {w['reading_travel_m']:.1f} m in reading order"
+                                        if 'reading_travel_m' in w else ''))
     return [''] + lines if lines else []
 
 
@@ -326,7 +359,7 @@ def table(results, sim):
     lines.append('timed-wall is the lab\'s own timing, shown for comparison: it has no targets.')
     lines.append('Targets: vertex <= 8 mm timed idle, <= 10 mm timed loaded, <= 1 mm feedback '
                  'and smooth; path <= 1 mm smooth; drawing 40.9 s timed idle, <= 10.5 s smooth; '
-                 'a word in smooth mode within 10% of (ink + travel) / speed; latency <= 10 ms; '
+                 'a word or an SVG in smooth mode within 10% of (ink + travel) / speed; latency <= 10 ms; '
                  'controller CPU <= 3%; cmd_vel <= 100/s; simulator 62.5 Hz +-1% and <= 3% CPU idle, <= 10% CPU with ten '
                  'moving turtles, <= 80 MB.')
     return '\n'.join(lines)
@@ -344,6 +377,8 @@ def main():
     parser.add_argument('--classroom', default='1,10,30',
                         help='how many turtles draw the N at once, per run ("" for none)')
     parser.add_argument('--parallel-word', default='yes', choices=('yes', 'no'))
+    parser.add_argument('--svg', default='yes', choices=('yes', 'no'),
+                        help='draw doc/flower.svg in smooth mode, per load')
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
@@ -388,6 +423,10 @@ def main():
                 print(f'bench: {WORD!r} in {font}, smooth, {load}...', flush=True)
                 results.setdefault('words', []).append(
                     dict(word_run(processes, recorder, font), load=load))
+            if args.svg == 'yes':
+                print(f'bench: doc/flower.svg, smooth, {load}...', flush=True)
+                results.setdefault('svg', []).append(
+                    dict(svg_run(processes, recorder), load=load))
             for load_process in loads:
                 load_process.stop()
             loads = []
