@@ -4,6 +4,7 @@ smooth mode: every vertex of the flattened strokes reached, the path on the
 strokes and the pen-up travel (a late command may run a tick past a vertex,
 as in test_words), and the picture in the file's stroke colours."""
 import math
+import time
 import unittest
 
 import rospy
@@ -60,9 +61,20 @@ class SvgLineArt(unittest.TestCase):
         cls.refused = logs.count('Refused', CONTROLLER)
         poses.wait_until_still(0, 10, still_for=0.5)
         cls.path = poses.path()
+        cls.logs, cls.poses, cls.pub = logs, poses, pub
 
     def test_the_file_is_drawn(self):
         self.assertEqual(self.refused, 0)
+
+    def test_a_file_that_is_no_svg_is_refused_in_one_line_and_nothing_moves(self):
+        t0 = time.time()
+        self.pub.publish(String('/etc/hostname'))
+        wait_until(lambda: self.logs.count('Refused', CONTROLLER), 20, 'the refusal')
+        rospy.sleep(1.0)
+        refusals = [m.msg for m in self.logs.messages if 'Refused' in m.msg]
+        self.assertEqual(len(refusals), 1)
+        self.assertIn('not an SVG file', refusals[0])
+        self.assertEqual(self.poses.moving_since(t0), [])
 
     def test_every_vertex_is_reached(self):
         vertices = [v for stroke in self.plan.strokes for v in stroke]

@@ -113,7 +113,7 @@ class TurtleController:
             rospy.logwarn('%s', job.note)
         rospy.loginfo('Drawing %s', job.summary(self.settings))
         if job.must_clear:
-            self.placement.make_room()
+            self.placement.make_room(self.turtle)
         if self.settings.parallel and len(job.chars) > 1:
             draw_in_parallel(self.turtle, self.spares, job.chars)
         else:

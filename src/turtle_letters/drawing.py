@@ -21,6 +21,9 @@ from .plan import SAME_POINT, Line, Pen, Turn, plan_strokes, shown, word_strokes
 from .route import ink_length, order_strokes, travel_length
 
 
+DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own: r, g, b, width in pixels
+
+
 class Plan(NamedTuple):
     start: tuple            # where the turtle is when it begins
     strokes: List[list]     # in the order and direction they are drawn, meters
@@ -80,7 +83,10 @@ def plan_text(text, places, start, settings) -> Plan:
 
 def plan_picture(picture, place, start, settings) -> Plan:
     """A picture (svgart.Picture) with its lower left corner at `place`: its
-    strokes a colour at a time, each colour's in the order that travels least."""
+    strokes a colour at a time, each colour's in the order that travels least.
+    A ~pen other than turtlesim's own overrides the file's colours."""
+    if settings.pen != DEFAULT_PEN:
+        picture = picture._replace(colours=[None] * len(picture.strokes))
     here, strokes, colours = (start.x, start.y), [], []
     for colour in dict.fromkeys(picture.colours):        # in the order they come
         mine = [[(place[0] + x, place[1] + y) for x, y in stroke]

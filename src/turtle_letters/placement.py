@@ -33,9 +33,9 @@ class Placement:
         self.spawned = False        # we spawned our turtle: we kill it when we go
         self.placed = threading.Event()
 
-    def make_room(self):
+    def make_room(self, turtle):
         """The canvas (or our part) is full. A shared canvas is never cleared:
-        that would wipe everyone's drawing."""
+        that would wipe everyone's drawing; the lab's is, by its turtle."""
         others = self.claims.others()
         if self.sheet.part is not None or others:
             rospy.loginfo("Turtle %s's part of the canvas is full: starting again at its first "
@@ -43,7 +43,7 @@ class Placement:
                           f' with {", ".join(sorted(others))}' if others else '')
             return
         rospy.loginfo('The canvas is full: clearing it and starting again at the first place')
-        self.driver.clear()
+        turtle.clear()
 
     def take_place(self):
         """Our turtle, found or spawned, and our place; raises Refused."""

@@ -16,7 +16,6 @@ from .motion import CLOCKS
 from .plan import MARGIN, TURN_DIRECTIONS, WORLD_SIZE, largest_size
 
 
-DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own: r, g, b, width in pixels
 
 
 class ParameterError(ValueError):

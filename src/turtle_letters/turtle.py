@@ -1,6 +1,6 @@
 """One turtle and the lab's calls on it: rotate(degrees) and move(meters),
 the lab's timed primitives; steer(primitive) and glide(points) for the other
-modes; pen(down). Each runs one command per pose that turtlesim publishes
+modes; pen(down) and clear(). Each runs one command per pose that turtlesim publishes
 (its 16 ms tick is the clock), through a TurtleDriver, and ends with a stop."""
 import math
 import time
@@ -8,10 +8,10 @@ import time
 import rospy
 
 from .diagnosis import STALL_SECONDS, stall_diagnosis
+from .drawing import DEFAULT_PEN
 from .driver import DrawingAborted
 from .motion import STOP, FeedbackExecutor, SmoothExecutor, StallWatch, TimedExecutor
 from .plan import Line, Turn, wrap
-from .settings import DEFAULT_PEN
 
 
 class Turtle:
@@ -59,6 +59,10 @@ class Turtle:
         pen = self.settings.pen if colour is None else tuple(colour) + self.settings.pen[3:]
         self.driver.set_pen(pen, down)
         self.pen_is_down = down and colour is None
+
+    def clear(self):
+        """Wipe turtlesim's canvas (the lab's whole canvas, when it is full)."""
+        self.driver.clear()
 
     def pen_down(self):
         """Before a drawing: the pen down in our colour, unless it surely is."""

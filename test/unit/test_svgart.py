@@ -119,3 +119,11 @@ def test_a_picture_is_drawn_a_colour_at_a_time_with_its_colours():
                              glide=lambda points: None)
     MODES['smooth'].carry_out(plan, turtle, lambda drawn, ink: None)
     assert [colour for down, colour in pens if down] == [(255, 0, 0), (255, 0, 0), (0, 0, 255)]
+
+
+def test_a_pen_of_ones_own_overrides_the_files_colours():
+    picture = svgart.Picture([[(0, 0), (1, 0)], [(0, 1), (1, 1)]], [(255, 0, 0), (0, 0, 255)],
+                             1.0, 0)
+    settings = Settings(lambda name, default: {'~pen': '10 20 30 2'}.get(name, default))
+    plan = plan_picture(picture, (3.0, 4.0), PlannedPose(3.0, 4.0, 0.0), settings)
+    assert plan.colours == [None, None]         # the node's ~pen for every stroke
