@@ -9,13 +9,14 @@ import unittest
 
 import rospy
 import rostest
-from PyQt5.QtGui import QColor, QImage
+from PyQt5.QtGui import QImage
 from std_msgs.msg import String
 from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
 from support.accuracy import distances_off, touches_a_wall, vertex_errors
 from support.nodes import LogWatch, PoseRecorder, wait_until
+from support.pictures import pixel
 from turtle_letters import svgart
 from turtle_letters.drawing import plan_picture
 from turtle_letters.motion import SIM_TICK
@@ -25,11 +26,6 @@ from turtle_letters.sheet import Sheet
 
 TOLERANCE = 0.001           # m: the target, for every vertex and every pose
 CONTROLLER = '/turtlebot_controller'
-
-
-def pixel(image, x, y):
-    c = QColor(image.pixel(int(round(x * 45)), int(round(499 - y * 45))))
-    return (c.red(), c.green(), c.blue())
 
 
 class SvgLineArt(unittest.TestCase):

@@ -9,7 +9,7 @@ import unittest
 
 import rospy
 import rostest
-from PyQt5.QtGui import QColor, QImage
+from PyQt5.QtGui import QImage
 from std_msgs.msg import String
 from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
@@ -17,17 +17,13 @@ from turtlesim.msg import Pose as PoseMsg
 from support.accuracy import (distance_to_polyline, distances_off, expected, touches_a_wall,
                               vertex_errors)
 from support.nodes import LogWatch, PoseRecorder, wait_until
+from support.pictures import pixel
 from turtle_letters.hershey import load_font
 from turtle_letters.motion import SIM_TICK
 from turtle_letters.plan import Layout, PlannedPose
 
 VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
 BACKGROUND = (69, 86, 255)
-
-
-def pixel(image, x, y):
-    c = QColor(image.pixel(int(round(x * 45)), int(round(499 - y * 45))))
-    return (c.red(), c.green(), c.blue())
 
 
 class Words(unittest.TestCase):

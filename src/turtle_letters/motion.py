@@ -25,7 +25,7 @@ import math
 import time
 from typing import Callable, NamedTuple, Optional
 
-from .plan import Turn, wrap
+from .plan import Turn, distance_to_segment, wrap
 
 SIM_TICK = 0.016            # turtlesim's fixed step, seconds
 SETTLED = 1e-5              # m or rad: a timed primitive is done this close to its amount
@@ -238,18 +238,9 @@ class SmoothExecutor:
         else:
             end = self.points[k]
         skipped = self.points[self.next:k + 1]
-        if all(_off_line(v, (x, y), end) <= CORNER_CUT for v in skipped if v != end):
+        if all(distance_to_segment(v, (x, y), end) <= CORNER_CUT for v in skipped if v != end):
             return end[0] - x, end[1] - y
         return dx, dy
-
-
-def _off_line(q, a, b):
-    """How far point q is from the segment a-b."""
-    abx, aby = b[0] - a[0], b[1] - a[1]
-    length2 = abx * abx + aby * aby
-    t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((q[0] - a[0]) * abx + (q[1] - a[1]) * aby)
-                                              / length2))
-    return math.hypot(q[0] - a[0] - t * abx, q[1] - a[1] - t * aby)
 
 
 class StallWatch:

@@ -43,6 +43,15 @@ class PlannedPose(NamedTuple):
     heading: float
 
 
+def distance_to_segment(q, a, b) -> float:
+    """How far point q is from the segment a-b."""
+    abx, aby = b[0] - a[0], b[1] - a[1]
+    length2 = abx * abx + aby * aby
+    t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((q[0] - a[0]) * abx + (q[1] - a[1]) * aby)
+                                              / length2))
+    return math.hypot(q[0] - a[0] - t * abx, q[1] - a[1] - t * aby)
+
+
 def shown(text: str, limit: int = 40) -> str:
     """`text` quoted for a log line: at most `limit` characters of it."""
     return repr(text if len(text) <= limit else text[:limit] + '...')

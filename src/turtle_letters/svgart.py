@@ -10,6 +10,8 @@ import math
 import os
 from typing import List, NamedTuple, Optional, Tuple
 
+from .plan import distance_to_segment
+
 TOLERANCE = 0.001       # m on the canvas: how far a flattened curve may be from the true one
 MAX_POINTS = 20000      # points in all: more would take the turtle hours
 MAX_DEPTH = 16          # halvings of a curve at most (1/65536 of it)
@@ -107,19 +109,11 @@ def flatten(path, tolerance: float) -> List[List[Point]]:
 def _curve(segment, t0, p0, t1, p1, tolerance, depth):
     """Points after p0 to p1 along the curve, halving until each chord is close."""
     probes = [_xy(segment.point(t0 + (t1 - t0) * f)) for f in (0.25, 0.5, 0.75)]
-    if depth >= MAX_DEPTH or all(_off_chord(q, p0, p1) <= tolerance for q in probes):
+    if depth >= MAX_DEPTH or all(distance_to_segment(q, p0, p1) <= tolerance for q in probes):
         return [p1]
     tm, pm = (t0 + t1) / 2, probes[1]
     return (_curve(segment, t0, p0, tm, pm, tolerance, depth + 1)
             + _curve(segment, tm, pm, t1, p1, tolerance, depth + 1))
-
-
-def _off_chord(q, a, b):
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    length2 = dx * dx + dy * dy
-    t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((q[0] - a[0]) * dx + (q[1] - a[1]) * dy)
-                                              / length2))
-    return math.hypot(q[0] - a[0] - t * dx, q[1] - a[1] - t * dy)
 
 
 def _without_repeats(points):
