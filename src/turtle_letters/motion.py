@@ -25,7 +25,7 @@ import math
 import time
 from typing import Callable, NamedTuple, Optional
 
-from .plan import Turn, distance_to_segment, wrap
+from .plan import Turn, wrap
 
 SIM_TICK = 0.016            # turtlesim's fixed step, seconds
 SETTLED = 1e-5              # m or rad: a timed primitive is done this close to its amount
@@ -34,7 +34,6 @@ POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex
 HEADING_TOLERANCE = 1e-4    # rad
 TURN_PER_TICK = 0.05        # rad: smooth mode turns at most 3.1 rad/s
 ON_COURSE = 1e-5            # rad: smooth mode holds its command while it faces the vertex this closely
-CORNER_CUT = 5e-4           # m: smooth mode goes through a vertex within a tick if it strays no more
 
 
 class Command(NamedTuple):
@@ -162,13 +161,8 @@ class SmoothExecutor:
     by any displacement in one tick, whatever way it faces. Each tick's move
     is a straight line, so a tick that would pass a vertex is cut short to
     land on it exactly: every move lies on one edge, and the drawn line is the
-    stroke. Where the polyline bends so little that a move straight through
-    the vertex strays no more than CORNER_CUT from it (a flattened curve's
-    many vertices), the tick goes through instead of stopping short: a
-    partial tick at every vertex of a curve would add a tenth to its time.
-    Closed loop: every move is worked out from the pose just read, and a
-    vertex counts as reached only when a pose shows the turtle on it, or past
-    it on the next edge within CORNER_CUT.
+    stroke. Closed loop: every move is worked out from the pose just read, and
+    a vertex counts as reached only when a pose shows the turtle on it.
 
     Meanwhile the turtle turns to face along the edge, by at most TURN_PER_TICK
     a tick. A command that comes late (a busy machine) finds turtlesim using
@@ -189,7 +183,8 @@ class SmoothExecutor:
 
     def update(self, pose) -> Optional[Command]:
         x, y = pose.x, pose.y
-        while self.next < len(self.points) and self._reached(self.next, x, y):
+        while self.next < len(self.points) and math.hypot(
+                self.points[self.next][0] - x, self.points[self.next][1] - y) < POSITION_TOLERANCE:
             self.next += 1
         if self.next == len(self.points):
             return None
@@ -203,44 +198,10 @@ class SmoothExecutor:
             return Command(self.step / SIM_TICK, 0.0, 0.0)
         if distance > self.step:                    # not this tick: go on along the edge
             dx, dy = dx * self.step / distance, dy * self.step / distance
-        else:                                       # through the vertex, if it bends little
-            dx, dy = self._through(x, y, distance, dx, dy)
         new_theta = pose.theta + turn               # the heading turtlesim moves along
         cos_t, sin_t = math.cos(new_theta), math.sin(new_theta)
         return Command((cos_t * dx + sin_t * dy) / SIM_TICK, (-sin_t * dx + cos_t * dy) / SIM_TICK,
                        turn / SIM_TICK)
-
-    def _reached(self, i, x, y):
-        """On vertex i, or past it on the next edge (a move went through it)."""
-        vx, vy = self.points[i]
-        if math.hypot(vx - x, vy - y) < POSITION_TOLERANCE:
-            return True
-        if i + 1 == len(self.points):
-            return False
-        ex, ey = self.points[i + 1][0] - vx, self.points[i + 1][1] - vy
-        length = math.hypot(ex, ey)
-        along = ((x - vx) * ex + (y - vy) * ey) / length
-        across = abs((x - vx) * ey - (y - vy) * ex) / length
-        return 0.0 < along <= length and across <= CORNER_CUT
-
-    def _through(self, x, y, distance, dx, dy):
-        """The move of a whole tick's length along the polyline from (x, y),
-        straight through the vertices on the way if none strays more than
-        CORNER_CUT from it; else (dx, dy), the move that lands on the vertex."""
-        left, k = self.step - distance, self.next
-        while left > 0 and k + 1 < len(self.points):
-            (ax, ay), (bx, by) = self.points[k], self.points[k + 1]
-            edge = math.hypot(bx - ax, by - ay)
-            if edge >= left:
-                end = (ax + (bx - ax) * left / edge, ay + (by - ay) * left / edge)
-                break
-            left, k = left - edge, k + 1
-        else:
-            end = self.points[k]
-        skipped = self.points[self.next:k + 1]
-        if all(distance_to_segment(v, (x, y), end) <= CORNER_CUT for v in skipped if v != end):
-            return end[0] - x, end[1] - y
-        return dx, dy
 
 
 class StallWatch:

@@ -7,7 +7,7 @@ from typing import NamedTuple
 import pytest
 
 from turtle_letters.font import FONT, LAB_N
-from turtle_letters.motion import EXECUTORS, SIM_TICK, StallWatch, TimedExecutor
+from turtle_letters.motion import EXECUTORS, StallWatch, TimedExecutor
 from turtle_letters.plan import Line, PlannedPose, Turn, plan_glyph
 from turtlesim_compat.world import CENTRE, Turtle
 
@@ -363,18 +363,3 @@ def test_timed_commands_that_come_irregularly_late_still_end_on_every_vertex(see
             assert tick < 100000, 'the primitive never ended'
     for vertex in [(p.x, p.y) for p in primitives if isinstance(p, Line)]:
         assert min(math.hypot(x - vertex[0], y - vertex[1]) for x, y in track) < 1e-3
-
-
-def test_smooth_goes_through_the_gentle_vertices_of_a_curve_but_lands_on_corners():
-    from support.accuracy import distance_to_polyline, vertex_errors
-    from turtle_letters.motion import CORNER_CUT
-    # a flattened quarter circle of radius 2 m (a vertex every 2 degrees), then a sharp corner
-    arc = [(3.0 + 2 * math.cos(math.radians(a)), 3.0 + 2 * math.sin(math.radians(a)))
-           for a in range(0, 92, 2)]
-    points = arc + [(arc[-1][0] + 1.0, arc[-1][1] - 1.0)]
-    turtle = Turtle('t', *points[0], math.pi / 2)
-    track, ticks = trace_smoothly(points[1:], turtle)
-    ink = sum(math.dist(a, b) for a, b in zip(points, points[1:]))
-    assert ticks <= 1.03 * ink / SIM_TICK + 3       # a partial tick at 46 vertices: +7%
-    assert max(distance_to_polyline(p, points) for p in track) <= CORNER_CUT + 1e-6
-    assert vertex_errors(track, [arc[-1], points[-1]]) == [pytest.approx(0, abs=1e-4)] * 2
