@@ -14,7 +14,7 @@ from .plan import distance_to_segment
 
 TOLERANCE = 0.001       # m on the canvas: how far a flattened curve may be from the true one
 MAX_POINTS = 20000      # points in all: more would take the turtle hours
-MAX_DEPTH = 16          # halvings of a curve at most (1/65536 of it)
+MAX_STEPS = 4096        # chords of one curve at most
 
 Point = Tuple[float, float]
 Colour = Optional[Tuple[int, int, int]]
@@ -99,21 +99,40 @@ def flatten(path, tolerance: float) -> List[List[Point]]:
         elif isinstance(segment, (svgelements.Line, svgelements.Close)):
             current.append(_xy(segment.end))
         else:
-            current += _curve(segment, 0.0, _xy(segment.start), 1.0, _xy(segment.end),
-                              tolerance, 0)
+            current += _curve(segment, tolerance)
     if len(current) > 1:
         polylines.append(current)
     return [_without_repeats(p) for p in polylines if len(_without_repeats(p)) > 1]
 
 
-def _curve(segment, t0, p0, t1, p1, tolerance, depth):
-    """Points after p0 to p1 along the curve, halving until each chord is close."""
-    probes = [_xy(segment.point(t0 + (t1 - t0) * f)) for f in (0.25, 0.5, 0.75)]
-    if depth >= MAX_DEPTH or all(distance_to_segment(q, p0, p1) <= tolerance for q in probes):
-        return [p1]
-    tm, pm = (t0 + t1) / 2, probes[1]
-    return (_curve(segment, t0, p0, tm, pm, tolerance, depth + 1)
-            + _curve(segment, tm, pm, t1, p1, tolerance, depth + 1))
+def _curve(segment, tolerance):
+    """Points after the start to the end of a curve: the fewest equal steps
+    of its parameter whose chords all stay within `tolerance` of it (each
+    vertex costs the turtle part of a tick, so fewer is faster)."""
+    low, high = 1, 1
+    while not _close(segment, high, tolerance):
+        low, high = high + 1, high * 2
+        if high > MAX_STEPS:
+            high = MAX_STEPS
+            break
+    while low < high:                   # the fewest steps that are close enough
+        middle = (low + high) // 2
+        if _close(segment, middle, tolerance):
+            high = middle
+        else:
+            low = middle + 1
+    return [_xy(segment.point(k / high)) for k in range(1, high + 1)]
+
+
+def _close(segment, steps, tolerance):
+    """Whether each of `steps` equal chords stays within `tolerance` of the curve."""
+    points = [_xy(segment.point(k / steps)) for k in range(steps + 1)]
+    for k in range(steps):
+        for f in (0.25, 0.5, 0.75):
+            q = _xy(segment.point((k + f) / steps))
+            if distance_to_segment(q, points[k], points[k + 1]) > tolerance:
+                return False
+    return True
 
 
 def _without_repeats(points):
