@@ -1,13 +1,15 @@
-"""A drawing: a text's plan, and the modes that carry a plan out. No ROS here.
+"""A drawing: a text's or a picture's plan, and the modes that carry a plan
+out. No ROS here.
 
-plan_text() turns a text at its places into a Plan: its strokes, and the
-primitives (plan.Turn, Line, Pen) that draw them. A mode from MODES carries
-the plan out on a turtle, anything with the lab's calls:
+plan_request() finds a request (a text, or an SvgFile) its place on the sheet
+and plans it (plan_text, plan_picture): its strokes, and the primitives
+(plan.Turn, Line, Pen) that draw them. A mode from MODES carries the plan out
+on a turtle, anything with the lab's calls:
 
     rotate(degrees), move(meters)   timed: the lab's open-loop primitives
     steer(primitive)                feedback: closed loop on the pose
     glide(points)                   smooth: a whole stroke without stopping
-    pen(down)                       up for travel, down to draw
+    pen(down, colour)               up for travel, down to draw
 
 turtle.Turtle is one such turtle; the unit tests' recorder is another.
 """
