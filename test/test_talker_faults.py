@@ -27,8 +27,8 @@ class TalkerFaults(unittest.TestCase):
     def setUp(self):
         self.logs.messages.clear()      # each test counts its own talker's lines
 
-    def start_talker(self, stdin):
-        talker = NodeProcess('turtle_letters', 'talker.py', stdin=stdin)
+    def start_talker(self, stdin, *params):
+        talker = NodeProcess('turtle_letters', 'talker.py', *params, stdin=stdin)
         self.addCleanup(talker.stop)
         pid = []
 
@@ -59,11 +59,35 @@ class TalkerFaults(unittest.TestCase):
         self.logs.wait_for('End of input', 15, TALKER, explain=talker.output)
         time.sleep(0.5)
         heard = []
-        rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
+        subscriber = rospy.Subscriber('/chatter', String, lambda m: heard.append(m.data))
+        self.addCleanup(subscriber.unregister)      # or it would take the next talkers' presses
         wait_until(lambda: heard, 10, 'the kept press')
         self.assertEqual(heard, ['P'])                         # kept, not lost
         self.assertEqual(self.logs.count('End of input', TALKER), 1)
         self.assert_idles_then_ends_cleanly(talker, pid, signal.SIGTERM)
+
+    def test_presses_made_while_the_first_subscriber_connects_keep_their_order(self):
+        read_end, write_end = os.pipe()
+        self.addCleanup(rospy.delete_param, TALKER + '/typing')    # the next talker's default
+        # a topic of its own: no subscriber of another test can take the kept presses
+        talker, _ = self.start_talker(read_end, '_typing:=true', 'chatter:=/in_order/chatter')
+        os.close(read_end)
+        self.addCleanup(os.close, write_end)
+        typed = 'abcdefghijklmnopqrstuvwxyz0123456789' * 2
+        os.write(write_end, typed[:10].encode())               # kept: nobody listens yet
+        # its own output: a line logged this early may precede the /rosout connection
+        wait_until(lambda: "'J' is kept" in talker.output(), 15, 'the tenth press kept',
+                   talker.output)
+        heard = []
+        subscriber = rospy.Subscriber('/in_order/chatter', String,
+                                      lambda m: heard.append(m.data), queue_size=100)
+        self.addCleanup(subscriber.unregister)
+        for char in typed[10:]:                                 # while it connects, and after
+            os.write(write_end, char.encode())
+            time.sleep(0.005)
+        wait_until(lambda: len(heard) >= len(typed), 15, 'every press', talker.output)
+        time.sleep(0.5)                                         # a duplicate would come by now
+        self.assertEqual(''.join(heard), typed.upper())
 
     def test_kept_presses_are_bounded(self):
         read_end, write_end = os.pipe()

@@ -92,10 +92,12 @@ class Talker(rospy.SubscribeListener):
         if message is None:
             return
         with self._lock:
-            if self._publisher.get_num_connections() == 0:
+            # Kept ones go first, and under the lock: a press made while the
+            # first subscriber connects must not overtake them.
+            if self._publisher.get_num_connections() == 0 or self._pending:
                 self._keep(message)
                 return
-        self._publisher.publish(String(message))
+            self._publisher.publish(String(message))
         rospy.loginfo('Published %r on %s', message, self._publisher.resolved_name)
 
     def _keep(self, message):
@@ -114,8 +116,9 @@ class Talker(rospy.SubscribeListener):
         with self._lock:
             pending, self._pending = self._pending, []
             self._dropping = False
+            for message in pending:
+                peer_publish(String(message))
         for message in pending:
-            peer_publish(String(message))
             rospy.loginfo('Published kept %r on %s', message, topic_name)
 
 
