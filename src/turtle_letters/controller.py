@@ -1,23 +1,24 @@
 """The turtle controller node: the lab's class, TurtleController. A trigger on
-`chatter` becomes a job (jobs.py); the drawing thread plans it (drawing.py)
-and has its mode carry the plan out on the turtle (turtle.py)."""
+`chatter` (or a goal of the draw action, actions.py) becomes a job (jobs.py);
+the drawing thread plans it (drawing.py) and has its mode carry the plan out
+on the turtle (turtle.py)."""
 import sys
 import threading
 
 import rospy
 from std_msgs.msg import String
 
+from .actions import DrawServer, describe
 from .diagnosis import POSE_PATIENCE, why_stopped
-from .drawing import MODES, Progress, SvgFile, plan_request
+from .drawing import MODES, SvgFile, plan_request
 from .driver import TurtleDriver
 from .jobs import TYPED_AHEAD, Jobs, chatter_request, text_request
 from .liveness import refuse_a_second
 from .parallel import Spares, draw_in_parallel
 from .placement import Placement, Refused
-from .plan import DoesNotFit, PlannedPose, shown
+from .plan import PlannedPose, shown
 from .settings import ParameterError, Settings, quote_unreadable
 from .sheet import Sheet
-from .svgart import SvgError
 from .turtle import Turtle, pose_text
 
 IGNORED_LOG_PERIOD = 10.0   # s: an ignored message is said once, then at most this often
@@ -27,8 +28,8 @@ THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
 class TurtleController:
     """The lab's class. On the trigger ("P" on `chatter`) its turtle draws
     `~letter` (N), in `~mode` (timed: the lab's rotate and move). Also draws
-    `~text` and `~svg` (std_msgs/String) and, in typing mode, every key.
-    Parameters: settings.PARAMETERS."""
+    `~text` and `~svg` (std_msgs/String), goals of the action `draw` and, in
+    typing mode, every key. Parameters: settings.PARAMETERS."""
 
     def draw_the_labs_n(self):
         """The lab's N in the lab's own words. "P" draws exactly this: the
@@ -49,6 +50,7 @@ class TurtleController:
         self.placement = Placement(self.driver, settings, self.sheet)
         self.spares = Spares(settings, self.driver.name)
         self.jobs = Jobs()
+        self.actions = DrawServer(self.jobs, settings.font)
         rospy.on_shutdown(self.leave)
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=TYPED_AHEAD)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
@@ -93,34 +95,28 @@ class TurtleController:
     def _work(self):
         self.placement.placed.wait()
         for request in self.jobs.each(rospy.is_shutdown):
-            try:
-                self.draw(request)
-            except (DoesNotFit, SvgError) as e:
-                rospy.logerr('Refused: %s', e)
-            except Exception as e:  # whatever it was, this thread must live on
-                self._abandon(request, e)
-            finally:
-                self.jobs.done()
+            self.actions.carry_out(request, self.draw, self._abandon)
 
-    def draw(self, request):
+    def draw(self, order):
         """Draw a text, or an SVG file, at the next free place on the canvas (or our part)."""
         self.placement.respawn_if_gone()
         pose = self.driver.poses.wait(patience=POSE_PATIENCE)
         start = PlannedPose(pose.x, pose.y, pose.theta)
-        job = plan_request(request, self.sheet, start, self.settings)
+        job = plan_request(order.request, self.sheet, start, self.settings)
         self.placement.note_cursor()
         if job.note:
             rospy.logwarn('%s', job.note)
         rospy.loginfo('Drawing %s', job.summary(self.settings))
+        order.started(job)
+        self.turtle.control = order.control
         if job.must_clear:
             self.placement.make_room(self.turtle)
         if self.settings.parallel and len(job.chars) > 1:
             draw_in_parallel(self.turtle, self.spares, job.chars)
         else:
             self.turtle.pen_down()
-            MODES[self.settings.mode].carry_out(job.plan, self.turtle, Progress(rospy.loginfo))
-        rospy.loginfo('Done drawing %s; the turtle is at %s', job.label,
-                      pose_text(self.driver.poses.latest))
+            MODES[self.settings.mode].carry_out(job.plan, self.turtle, order.advanced)
+        return f'Done drawing {job.label}; the turtle is at {pose_text(self.driver.poses.latest)}'
 
     def _abandon(self, request, error):
         """Stop the turtle, and forget the layout and the pen: the simulator may
@@ -128,8 +124,8 @@ class TurtleController:
         self.driver.stop()
         self.sheet.forget()
         self.turtle.pen_is_down = False
-        rospy.logerr('Drawing of %r stopped: %s. The next trigger starts a new one.',
-                     getattr(request, 'path', request), why_stopped(error, self.driver))
+        return (f'Drawing of {describe(request)} stopped: {why_stopped(error, self.driver)}. '
+                'The next trigger starts a new one.')
 
 
 def main():

@@ -13,6 +13,7 @@ on a turtle, anything with the lab's calls:
 
 turtle.Turtle is one such turtle; the unit tests' recorder is another.
 """
+import itertools
 import math
 import time
 from typing import List, NamedTuple, Optional
@@ -175,13 +176,16 @@ def _each_primitive(plan, turtle, step, progress):
 
 
 class Progress:
-    """Every `period` s of a drawing, one line: how far, and how long to go."""
+    """How far a drawing has got (ink_drawn, m); every `period` s of it, one
+    line saying so. `now`: a clock that may leave pauses out."""
 
     def __init__(self, say, period=5.0, now=time.monotonic):
         self.say, self.period, self.now = say, period, now
         self.started = self.last = now()
+        self.ink_drawn = 0.0
 
     def __call__(self, ink_drawn, ink):
+        self.ink_drawn = max(self.ink_drawn, ink_drawn)
         now = self.now()
         if now - self.last < self.period or not 0 < ink_drawn < ink - 1e-6:
             return
@@ -189,3 +193,10 @@ class Progress:
         to_go = (now - self.started) * (ink - ink_drawn) / ink_drawn
         self.say(f'{100 * ink_drawn / ink:.0f}% of the ink drawn ({ink_drawn:.2f} of {ink:.2f} m); '
                  f'about {to_go:.0f} s to go')
+
+    def report(self, plan):
+        """(share of the ink drawn, seconds to go, strokes finished) by `plan`."""
+        share = min(1.0, self.ink_drawn / plan.ink) if plan.ink > 0 else 0.0
+        to_go = max(0.0, plan.seconds - (self.now() - self.started))
+        ends = itertools.accumulate(ink_length([stroke]) for stroke in plan.strokes)
+        return share, to_go, sum(1 for end in ends if end <= self.ink_drawn + 1e-6)

@@ -9,6 +9,8 @@ import collections
 import threading
 from typing import Optional
 
+from .drawing import SvgFile
+
 TYPED_AHEAD = 32
 
 
@@ -28,12 +30,15 @@ class Jobs:
         with self._changed:
             return not self._drawing and not self._waiting
 
-    def offer(self, text: str) -> bool:
-        """A trigger or a word: taken only when nothing waits or is drawn."""
+    def offer(self, request, accept=lambda: None) -> bool:
+        """A trigger, a word or a goal: taken only when nothing waits or is
+        drawn. `accept()` is called once it is taken, before anyone can take
+        it to draw (an action goal must be accepted before it ends)."""
         with self._changed:
             if self._drawing or self._waiting:
                 return False
-            return self._append(text)
+            accept()
+            return self._append(request)
 
     def offer_key(self, char: str) -> bool:
         """A typed key: waits its turn unless `typed_ahead` keys already wait."""
@@ -87,3 +92,13 @@ def text_request(data: str, font):
         return None, (f'font {font.name} has no glyph for '
                       f'{font.undrawable(text)[:10] or "a blank text"}')
     return text, None
+
+
+def goal_request(text: str, svg: str, font):
+    """(text or SvgFile to draw, None), or (None, why not) for a draw goal."""
+    if bool(text) == bool(svg):
+        given = 'both were given' if text else 'neither was given'
+        return None, f'a goal has exactly one of text and svg ({given})'
+    if svg:
+        return SvgFile(svg), None
+    return text_request(text, font)

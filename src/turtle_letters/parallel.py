@@ -46,9 +46,12 @@ class Spares:
 
 
 def draw_in_parallel(turtle, spares, chars):
-    """`chars`: (character, place) pairs; `turtle` draws the first."""
+    """`chars`: (character, place) pairs; `turtle` draws the first. The
+    spares obey the same pause and cancel as `turtle`."""
     try:
         helpers = [spares.spawn(number, place) for number, (_, place) in enumerate(chars[1:], 2)]
+        for helper in helpers:
+            helper.control = turtle.control
         errors = _all_at_once([lambda t=t, c=c, p=p: draw_one(t, c, p)
                                for t, (c, p) in zip([turtle] + helpers, chars)])
         if errors:

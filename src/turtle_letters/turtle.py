@@ -1,12 +1,15 @@
 """One turtle and the lab's calls on it: rotate(degrees) and move(meters),
 the lab's timed primitives; steer(primitive) and glide(points) for the other
 modes; pen(down) and clear(). Each runs one command per pose that turtlesim publishes
-(its 16 ms tick is the clock), through a TurtleDriver, and ends with a stop."""
+(its 16 ms tick is the clock), through a TurtleDriver, and ends with a stop.
+At every tick the turtle's control may hold it (pause) or stop the drawing
+(cancel)."""
 import math
 import time
 
 import rospy
 
+from .control import Cancelled, Control
 from .diagnosis import STALL_SECONDS, stall_diagnosis
 from .drawing import DEFAULT_PEN
 from .driver import DrawingAborted
@@ -22,6 +25,7 @@ class Turtle:
         self.driver = driver
         self.settings = settings
         self.label = label
+        self.control = Control()        # the drawing's: set for each drawing
         # turtlesim's pen starts down in its default colour: a call is needed
         # only for another colour, or once the pen may have been left up
         self.pen_is_down = settings.pen == DEFAULT_PEN
@@ -71,7 +75,8 @@ class Turtle:
 
     def _timed(self, primitive, description):
         s = self.settings
-        self._run(TimedExecutor(primitive, s.linear_speed, s.angular_speed, s.clock), description)
+        self._run(TimedExecutor(primitive, s.linear_speed, s.angular_speed, s.clock,
+                                now=self.control.clock), description)
 
     def _fresh_pose(self):
         pose = self.driver.poses.wait()
@@ -80,14 +85,21 @@ class Turtle:
 
     def _run(self, executor, description):
         """One command per pose until the executor is done, then a stop. A
-        turtle that does not do as told for STALL_SECONDS stops the drawing."""
-        driver = self.driver
+        turtle that does not do as told for STALL_SECONDS stops the drawing.
+        Paused, the turtle is told to stand while the executor goes on
+        reading poses (so a timed primitive counts the tick a late stop took)."""
+        driver, control = self.driver, self.control
         rospy.loginfo('%s%s: start at %s', self.label, description, pose_text(driver.poses.latest))
         watch = StallWatch(STALL_SECONDS)
         command = executor.start(driver.poses.latest)
         while command is not None:
-            driver.publish(command)
-            watch.sent(command)
+            if control.cancelled:
+                driver.stop()
+                raise Cancelled(f'cancelled during {description}, '
+                                f'at {pose_text(driver.poses.latest)}')
+            sent = STOP if control.paused else command
+            driver.publish(sent)
+            watch.sent(sent)
             pose = driver.poses.next()
             if watch.stalled(pose, time.monotonic()):
                 raise DrawingAborted(stall_diagnosis(driver, pose))

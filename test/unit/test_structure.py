@@ -7,7 +7,7 @@ import pytest
 
 SRC = os.path.join(os.path.dirname(__file__), '..', '..', 'src', 'turtle_letters')
 MODULES = sorted(f[:-3] for f in os.listdir(SRC) if f.endswith('.py') and f != '__init__.py')
-PURE = {'drawing', 'font', 'hershey', 'hosts', 'jobs', 'keys', 'motion', 'parts', 'plan',
+PURE = {'control', 'drawing', 'font', 'hershey', 'hosts', 'jobs', 'keys', 'motion', 'parts', 'plan',
         'route', 'settings', 'sheet', 'svgart'}
 ROS = ('rospy', 'rosgraph', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')
 
@@ -29,7 +29,7 @@ def imports(module):
             others.add(node.module.split('.')[0])
         elif isinstance(node, ast.Import):
             others.update(a.name.split('.')[0] for a in node.names)
-    return ours - {'srv'}, others       # srv: the generated service types
+    return ours - {'srv', 'msg'}, others     # the generated service and action types
 
 
 def test_the_modules_import_in_layers_with_no_cycle():
