@@ -2,7 +2,9 @@
 import threading
 import time
 
-from turtle_letters.jobs import Jobs
+from turtle_letters.drawing import SvgFile
+from turtle_letters.font import BUILTIN
+from turtle_letters.jobs import Jobs, goal_request
 
 
 def test_a_trigger_while_drawing_is_refused_and_the_next_one_after_is_taken():
@@ -91,3 +93,24 @@ def test_each_hands_out_the_requests_in_turn_until_stopped():
         seen.append(request)
         jobs.done()
     assert seen == ['A', 'B']
+
+
+def test_a_goal_is_accepted_before_it_can_be_taken_and_only_when_idle():
+    jobs, said = Jobs(), []
+    taker = threading.Thread(target=lambda: said.append(('taken', jobs.take(5.0))))
+    taker.start()
+    assert jobs.offer('N', accept=lambda: (time.sleep(0.2), said.append(('accepted', 'N'))))
+    taker.join()
+    assert said == [('accepted', 'N'), ('taken', 'N')]
+    assert not jobs.offer('Z', accept=lambda: said.append(('accepted', 'Z')))
+    assert said[-1] == ('taken', 'N')
+
+
+def test_a_goal_has_exactly_one_of_text_and_svg():
+    assert goal_request('', '', BUILTIN) == (None, 'a goal has exactly one of text and svg '
+                                                   '(neither was given)')
+    assert 'both were given' in goal_request('N', 'a.svg', BUILTIN)[1]
+    assert goal_request('', '/tmp/a.svg', BUILTIN) == (SvgFile('/tmp/a.svg'), None)
+    assert goal_request('n', '', BUILTIN) == ('N', None)
+    request, why = goal_request('N\u00e9', '', BUILTIN)
+    assert request is None and 'no glyph' in why
