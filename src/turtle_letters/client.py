@@ -29,7 +29,7 @@ class Bar:
     def __init__(self, what):
         from tqdm import tqdm           # only a terminal needs it
         self.bar = tqdm(total=100, desc=what, unit='%', file=sys.stdout,
-                        bar_format='{desc}: {percentage:3.0f}%|{bar}| {postfix}')
+                        bar_format='{desc}: {percentage:3.0f}%|{bar}| [{elapsed}{postfix}]')
 
     def show(self, feedback):
         self.bar.n = round(100 * feedback.progress, 1)
