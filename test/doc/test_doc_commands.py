@@ -30,6 +30,8 @@ ELSEWHERE = {
     'roslaunch turtle_letters classroom.launch': 'test/network',
     'roslaunch turtle_letters student.launch name:=alice': 'test/network',
     "rostopic pub -1 /alice/chatter std_msgs/String \"data: 'P'\"": 'test/network',
+    'rostopic echo /draw/feedback': 'test/action.test follows the same feedback with a client',
+    'rosservice call /pause true': 'test/action.test pauses a drawing mid-move, then resumes it',
 }
 RECIPE = 'doc/install.md'       # test/workspace/test_workspaces.py runs it line by line
 # Sent to a launch, in this order, each with what its controller then says
@@ -40,6 +42,7 @@ TRIGGERS = {
           ("rostopic pub -1 /turtlebot_controller/text std_msgs/String \"data: 'HI'\"",
            '~text ignored: a drawing is waiting or under way')],
     'make run ARGS="svg:=doc/flower.svg mode:=smooth"': [(None, "Done drawing 'flower.svg'")],
+    'make run ARGS="letter:=K"': [('rosrun turtle_letters draw.py L', "Done drawing 'L'")],
     f'{LAB} mode:=feedback': [
         ("rostopic pub -1 /turtlebot_controller/svg std_msgs/String "
          "\"data: '$PWD/doc/flower.svg'\"", "Drawing 'flower.svg', 9 strokes")],
@@ -129,7 +132,7 @@ def test_the_launch_comes_up_ready_and_stops_on_ctrl_c(command, master_port):
                 sent = subprocess.run(['bash', '-c', trigger], cwd=REPO,
                                       env=environment(master_port), stdout=subprocess.PIPE,
                                       stderr=subprocess.STDOUT, universal_newlines=True,
-                                      timeout=60)
+                                      timeout=180)
                 assert sent.returncode == 0, sent.stdout
             wait_for(launch, heard, 60)
     finally:
