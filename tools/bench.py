@@ -33,14 +33,14 @@ from std_msgs.msg import String  # noqa: E402
 from std_srvs.srv import Empty  # noqa: E402
 from turtlesim.srv import Spawn  # noqa: E402
 
-from turtle_letters.plan import (Layout, PlannedPose, glyph_for, glyph_strokes,  # noqa: E402
-                                 word_strokes)
+from turtle_letters.font import BUILTIN  # noqa: E402
+from turtle_letters.grading import ideal_letter, score  # noqa: E402
+from turtle_letters.plan import PlannedPose, glyph_for, word_strokes  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'test'))
-from support.accuracy import distance_to_polyline, vertex_errors  # noqa: E402
 from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # noqa: E402
                            wait_until)
-from support.procstat import cpu_seconds, rss_mb  # noqa: E402
+from turtle_letters.procstat import cpu_seconds, rss_mb  # noqa: E402
 from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
@@ -63,6 +63,10 @@ WORD = 'Hello, World!'
 SVG = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'doc',
                                    'flower.svg'))
 WORD_FONTS = ('futural', 'scripts')
+COLOURS = {'timed idle': (33, 102, 172), 'timed loaded': (103, 169, 207),
+           'timed-wall idle': (27, 120, 55), 'timed-wall loaded': (127, 191, 123),
+           'feedback idle': (178, 24, 43), 'feedback loaded': (239, 138, 98),
+           'smooth idle': (118, 42, 131), 'smooth loaded': (194, 165, 207)}
 
 
 
@@ -80,9 +84,7 @@ class Load:
 
 
 def ideal_strokes(letter, size):
-    start = PlannedPose(5.544445, 5.544445, 0.0)
-    place = Layout((start.x, start.y), size).reserve(letter)[0][0]
-    return glyph_strokes(glyph_for(letter), place, size)
+    return ideal_letter(letter, size, BUILTIN, PlannedPose(5.544445, 5.544445, 0.0))
 
 
 def wait_for_controller_connections(recorder):
@@ -136,15 +138,16 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
     before = [p for t, p in poses if t < t_trigger][-1:]   # where the turtle stood
     path = [(p.x, p.y) for p in before + [p for t, p in poses if t >= t_trigger]]
     strokes = ideal_strokes(args.letter, args.size)
+    graded = score(path, strokes)
     vertices = [v for s in strokes for v in s]
     end = poses[-1][1]
     span = t_end_wall - t_trigger
     return {
         'latency_ms': (t_first - t_trigger) * 1000,
         'drawing_s': drawing,
-        'vertex_mm': [e * 1000 for e in vertex_errors(path, vertices)],
-        'vertex_max_mm': max(vertex_errors(path, vertices)) * 1000,
-        'path_max_mm': max(min(distance_to_polyline(q, s) for s in strokes) for q in path) * 1000,
+        'vertex_mm': [e * 1000 for e in graded.vertex_errors],
+        'vertex_max_mm': graded.worst_vertex * 1000,
+        'path_max_mm': graded.off * 1000,
         'final_mm': math.hypot(end.x - vertices[-1][0], end.y - vertices[-1][1]) * 1000,
         'controller_cpu_pct': 100 * ctl_cpu / span,
         'cmd_vel_per_s': len([1 for t, _ in commands if t_first <= t <= t_stop]) / drawing,
@@ -213,19 +216,12 @@ def smooth_run(processes, recorder, settings, topic, data):
 
 def measure(plan, commands, poses, speed):
     """Time against (ink + travel) / speed; how far the poses and vertices are off."""
-    travel_moves, here = [], plan.start
-    for stroke in plan.strokes:
-        travel_moves.append([here, stroke[0]])
-        here = stroke[-1]
-    allowed = plan.strokes + travel_moves
-    path = [(p.x, p.y) for p in poses]
+    graded = score([(p.x, p.y) for p in poses], plan.strokes, plan.start)
     moving = [t for t, m in commands if m]
     return {
         'drawing_s': max(moving) - min(moving), 'ideal_s': (plan.ink + plan.travel) / speed,
-        'path_max_mm': max(min(distance_to_polyline(q, s) if len(s) > 1 else
-                               math.hypot(q[0] - s[0][0], q[1] - s[0][1]) for s in allowed)
-                           for q in path) * 1000,
-        'vertex_max_mm': max(vertex_errors(path, [v for s in plan.strokes for v in s])) * 1000,
+        'path_max_mm': graded.off * 1000,
+        'vertex_max_mm': graded.worst_vertex * 1000,
         'ink_m': plan.ink, 'travel_m': plan.travel,
     }
 
@@ -446,12 +442,13 @@ def main():
     print('\n' + text)
     with open(os.path.join(args.out, 'bench.txt'), 'w') as f:
         f.write(text + '\n')
-    paths = {(g['mode'], g['load']): [r.pop('path') for r in g['runs']] for g in results['groups']}
+    paths = {f"{g['mode']} {g['load']}": [r.pop('path') for r in g['runs']]
+             for g in results['groups']}
     with open(os.path.join(args.out, 'bench.json'), 'w') as f:
         json.dump(results, f, indent=1)
     picture = os.path.join(args.out, 'bench.png')
-    from bench_picture import draw
-    draw(picture, ideal_strokes(args.letter, args.size), paths)
+    from turtle_letters.picture import draw
+    draw(picture, ideal_strokes(args.letter, args.size), paths, COLOURS)
     print(f'\nbench: wrote {args.out}/bench.json, bench.txt and bench.png')
 
 

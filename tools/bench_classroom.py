@@ -15,7 +15,7 @@ from std_srvs.srv import Empty
 
 from support.accuracy import expected, vertex_errors
 from support.nodes import PoseRecorder, connections, wait_until
-from support.procstat import cpu_seconds
+from turtle_letters.procstat import cpu_seconds
 from turtle_letters.font import BUILTIN
 from turtle_letters.plan import Layout, PlannedPose, Turn, plan_strokes
 

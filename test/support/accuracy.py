@@ -1,34 +1,21 @@
-"""Judging a recorded turtle path against the ideal strokes. No ROS here:
-the tests and the benchmark both use it."""
-import math
-
+"""Judging a recorded turtle path against the ideal strokes, for the tests:
+the measures are the grader's (turtle_letters.grading). No ROS here."""
 from turtle_letters.font import BUILTIN
-from turtle_letters.plan import WORLD_SIZE, Line, Pen, plan_strokes, word_strokes
+from turtle_letters.grading import distance_to_lines, vertex_errors  # noqa: F401 (for the tests)
+from turtle_letters.plan import (WORLD_SIZE, Line, Pen, distance_to_segment,  # noqa: F401
+                                 plan_strokes, word_strokes)
 from turtle_letters.route import order_strokes
 
 # The lab's ideal N from the turtle's start pose (the lab's own figures).
 LAB_N_VERTICES = [(5.5444, 5.5444), (5.5444, 8.5444), (8.0193, 6.0696), (8.0193, 9.0696)]
 
 
-def distance_to_segment(p, a, b):
-    (px, py), (ax, ay), (bx, by) = p, a, b
-    dx, dy = bx - ax, by - ay
-    length2 = dx * dx + dy * dy
-    t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((px - ax) * dx + (py - ay) * dy) / length2))
-    return math.hypot(px - (ax + t * dx), py - (ay + t * dy))
-
-
 def distance_to_polyline(p, vertices):
-    return min(distance_to_segment(p, a, b) for a, b in zip(vertices, vertices[1:]))
+    return distance_to_lines(p, [vertices])
 
 
 def worst_distance_from(path, vertices):
     return max(distance_to_polyline(p, vertices) for p in path)
-
-
-def vertex_errors(path, vertices):
-    """For each vertex, how close the path ever came to it."""
-    return [min(math.hypot(x - vx, y - vy) for x, y in path) for vx, vy in vertices]
 
 
 def touches_a_wall(path, clearance=1e-6):
@@ -57,8 +44,7 @@ def expected(text, places, start, size, font=BUILTIN, direction='ccw'):
 
 def distances_off(path, strokes, travel):
     """How far each point of the path is from the strokes and travel segments, m."""
-    allowed = strokes + travel
-    return [min(distance_to_polyline(q, line) for line in allowed) for q in path]
+    return [distance_to_lines(q, strokes + travel) for q in path]
 
 
 def worst_off(path, strokes, travel):

@@ -7,7 +7,7 @@ import pytest
 
 SRC = os.path.join(os.path.dirname(__file__), '..', '..', 'src', 'turtle_letters')
 MODULES = sorted(f[:-3] for f in os.listdir(SRC) if f.endswith('.py') and f != '__init__.py')
-PURE = {'control', 'drawing', 'font', 'hershey', 'hosts', 'jobs', 'keys', 'motion', 'parts', 'plan',
+PURE = {'control', 'drawing', 'grading', 'picture', 'procstat', 'font', 'hershey', 'hosts', 'jobs', 'keys', 'motion', 'parts', 'plan',
         'route', 'settings', 'sheet', 'svgart'}
 ROS = ('rospy', 'rosgraph', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')
 

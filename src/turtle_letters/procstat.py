@@ -1,5 +1,5 @@
 """CPU time and memory of a process, from /proc (Linux). No ROS here: the
-fault tests and the benchmark both measure nodes with it."""
+grader, the fault tests and the benchmark measure nodes with it."""
 import os
 
 
