@@ -4,6 +4,8 @@ own and driving a turtle it spawned, all triggered at once (as ten
 students' machines would, see test/network for real ones). Each letter is
 checked like a single letter; no part of the canvas crosses another, and
 no turtle leaves its own."""
+import json
+import os
 import unittest
 
 import rospy
@@ -29,6 +31,8 @@ class Classroom(unittest.TestCase):
         rospy.init_node('classroom_test')
         rospy.wait_for_service('/spawn', 30)
         cls.logs = LogWatch()
+        cls.tables = []
+        rospy.Subscriber('/scoreboard', String, lambda m: cls.tables.append(m.data), queue_size=50)
         cls.names = [f'student{i}' for i in range(len(LETTERS))]
         cls.recorders = {n: PoseRecorder(turtle=n) for n in cls.names}
         cls.controllers = [NodeProcess('turtle_letters', 'turtle_controller.py', f'__ns:={n}',
@@ -55,6 +59,19 @@ class Classroom(unittest.TestCase):
     def tearDownClass(cls):
         for controller in cls.controllers:
             controller.stop()
+
+    def test_the_scoreboard_grades_every_letter_a_pass(self):
+        wait_until(lambda: self.tables and len(self.tables[-1].splitlines()) == 1 + len(LETTERS),
+                   60, 'a scoreboard of every student', lambda: (self.tables or ['none'])[-1])
+        rows = [line.split() for line in self.tables[-1].splitlines()[1:]]
+        self.assertEqual(sorted((row[0], row[1], row[2]) for row in rows),
+                         sorted((n, letter, 'PASS') for n, letter in zip(self.names, LETTERS)))
+        folder = rospy.get_param('~grades')
+        with open(os.path.join(folder, 'scoreboard.json')) as f:
+            reports = json.load(f)
+        self.assertEqual(len(reports), len(LETTERS))
+        self.assertLess(max(r['worst_vertex_mm'] for r in reports.values()), 1.0)
+        self.assertGreater(os.path.getsize(os.path.join(folder, 'scoreboard.png')), 10000)
 
     def test_every_letter_is_drawn_as_a_single_letter_is(self):
         self.assertEqual(self.logs.count('stopped'), 0, self.outputs())

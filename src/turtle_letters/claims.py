@@ -4,7 +4,9 @@ parameter server, the one store every machine of a ROS system shares.
 Each controller writes `<turtlesim's namespace>/turtle_letters/parts/<turtle>`
 = {'node': its name, 'uri': its XML-RPC URI, 'box': [x0, y0, x1, y1],
 'place': [x, y] (the part's first place), 'spawned': whether the controller
-spawned the turtle, 'cursor': [x, y] (where its next letter goes)}.
+spawned the turtle, 'cursor': [x, y] (where its next letter goes),
+'drawing': {'text': ..., 'places': [[x, y], ...]} (the text drawn last, for
+the scoreboard)}.
 
 A part is live while the node at its URI answers (liveness.py): a crashed
 controller's part is free again within a second, and a controller that

@@ -103,7 +103,7 @@ class TurtleController:
         pose = self.driver.poses.wait(patience=POSE_PATIENCE)
         start = PlannedPose(pose.x, pose.y, pose.theta)
         job = plan_request(order.request, self.sheet, start, self.settings)
-        self.placement.note_cursor()
+        self.placement.note_cursor(job.chars)
         if job.note:
             rospy.logwarn('%s', job.note)
         rospy.loginfo('Drawing %s', job.summary(self.settings))

@@ -77,11 +77,13 @@ def _here(host):
 
 
 class TurtleGrader:
-    """Grades each drawing of one turtle; `tell(report, strokes, path)` gets every report."""
+    """Grades each drawing of one turtle against `ideal(start)`: (what it
+    should have drawn, its strokes), or (why it cannot say, None), from the
+    turtle's pose before it moved. `tell(report, strokes, path)` gets every report."""
 
-    def __init__(self, settings, tolerances, tell, settle=SETTLE, timeout=300.0):
-        self.settings, self.tolerances, self.tell = settings, tolerances, tell
-        self.turtle = rospy.resolve_name(settings.turtle)
+    def __init__(self, turtle, ideal, tolerances, tell, settle=SETTLE, timeout=300.0):
+        self.ideal, self.tolerances, self.tell = ideal, tolerances, tell
+        self.turtle = rospy.resolve_name(turtle)
         self.watch, self.timeout = DrawingWatch(settle), timeout
         self.commands, self.use, self.count = 0, None, 0
         self.heard_since = time.monotonic()
@@ -106,13 +108,19 @@ class TurtleGrader:
                           'triggered?', self.turtle, NEVER_MOVED)
 
     def _grade(self, unfinished):
-        s, watch = self.settings, self.watch
-        start = PlannedPose(watch.stood.x, watch.stood.y, watch.stood.theta) if watch.stood else \
+        watch, stood = self.watch, self.watch.stood
+        start = PlannedPose(stood.x, stood.y, stood.theta) if stood else \
             PlannedPose(*watch.path[0], 0.0)
-        strokes = ideal_letter(s.letter, s.size, s.font, start)
-        graded = score(watch.path, strokes, watch.path[0], self.tolerances)
+        label, strokes = self.ideal(start)
+        path, seconds = watch.path, watch.seconds
+        watch.reset()
+        self.heard_since = time.monotonic()
+        if strokes is None:
+            rospy.logwarn('%s drew something, not graded: %s', self.turtle, label)
+            return
+        graded = score(path, strokes, path[0], self.tolerances)
         self.count += 1
-        report = dict(turtle=self.turtle, letter=s.letter, number=self.count,
+        report = dict(turtle=self.turtle, letter=label, number=self.count,
                       verdict='pass' if graded.passed and not unfinished else 'fail',
                       reason=unfinished or graded.reason,
                       tolerance_mm=self.tolerances.vertex * 1000,
@@ -120,12 +128,9 @@ class TurtleGrader:
                       vertex_mm=[e * 1000 for e in graded.vertex_errors],
                       off_mm=graded.off * 1000, ink_off_m=graded.ink_off,
                       missing_strokes=[i + 1 for i in graded.missing],
-                      end_mm=graded.end_error * 1000, drawing_s=watch.seconds,
-                      commands_per_s=self.commands / max(watch.seconds, 1e-6),
+                      end_mm=graded.end_error * 1000, drawing_s=seconds,
+                      commands_per_s=self.commands / max(seconds, 1e-6),
                       controller=self.use.node, cpu_pct=self.use.share(), cpu_note=self.use.note)
-        path = watch.path
-        watch.reset()
-        self.heard_since = time.monotonic()
         self.tell(report, strokes, path)
 
 
@@ -180,7 +185,9 @@ def main():
         stem = save(report, strokes, path)
         rospy.loginfo('  saved %s.json and .png', stem)
         published.publish(String(json.dumps(report)))
-    grader = TurtleGrader(settings, tolerances, tell,
+    def ideal(start):
+        return settings.letter, ideal_letter(settings.letter, settings.size, settings.font, start)
+    grader = TurtleGrader(settings.turtle, ideal, tolerances, tell,
                           timeout=float(rospy.get_param('~timeout', 300.0)))
     rospy.loginfo('Grading %s: %r at %g m in font %s, vertices within %.0f mm; waiting for it '
                   'to move', grader.turtle, settings.letter, settings.size, settings.font.name,

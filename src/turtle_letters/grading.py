@@ -43,7 +43,13 @@ def ideal_letter(letter, size, font, start: PlannedPose):
     """The strokes of `letter` at the place a lab's turtle standing at
     `start` draws it, in the order this package draws them."""
     places, _ = Layout((start.x, start.y), size, font).reserve(letter)
-    strokes = word_strokes(letter, places, size, font)
+    return ideal_text(letter, places, size, font, start)
+
+
+def ideal_text(text, places, size, font, start: PlannedPose):
+    """The strokes of `text` at `places`, in the order this package draws
+    them from `start`."""
+    strokes = word_strokes(text, places, size, font)
     return strokes if font.name == 'builtin' else order_strokes(strokes, (start.x, start.y))
 
 

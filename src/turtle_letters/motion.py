@@ -98,7 +98,10 @@ class TimedExecutor:
         and so on until it is right. (A pose's linear velocity has no sign;
         between two stops every command goes the same way.)"""
         if self.clock == 'wall':
-            self.elapsed_amount = self.speed * (self.now() - self.started_at)
+            # The command sent now moves the turtle on the next tick: it is
+            # sent while that tick ends nearer the time up than short of it.
+            ahead = self.now() - self.started_at + SIM_TICK / 2
+            self.elapsed_amount = self.speed * ahead
             return self._command()
         used = abs(pose.angular_velocity if self.turning else pose.linear_velocity)
         self.elapsed_amount += self.way * used * SIM_TICK

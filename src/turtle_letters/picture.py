@@ -94,3 +94,38 @@ def draw(path_png, strokes, paths, colours, half_box=0.01):
         x += 140
     painter.end()
     image.save(path_png, 'PNG')
+
+
+CANVAS_M = 11.088889        # turtlesim's canvas, m a side
+CANVAS_SCALE = 60.0         # px per m
+
+
+def draw_canvas(path_png, drawings):
+    """The whole canvas: for each (strokes, path, label, passed), the ideal
+    strokes in grey, the path in green (passed) or red, the label above."""
+    app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
+    side = int(CANVAS_M * CANVAS_SCALE)
+    image = QImage(side, side, QImage.Format_RGB32)
+    image.fill(QColor('white'))
+    painter = QPainter(image)
+    painter.setRenderHint(QPainter.Antialiasing)
+    painter.setFont(QFont('Sans', 8))
+
+    def px(p):
+        return QPointF(p[0] * CANVAS_SCALE, (CANVAS_M - p[1]) * CANVAS_SCALE)
+
+    for strokes, path, label, passed in drawings:
+        painter.setPen(QPen(QColor(200, 200, 200), 5))
+        for stroke in strokes:
+            for a, b in zip(stroke, stroke[1:]):
+                painter.drawLine(px(a), px(b))
+        painter.setPen(QPen(QColor(27, 120, 55) if passed else QColor(178, 24, 43), 1.5))
+        for a, b in zip(path, path[1:]):
+            painter.drawLine(px(a), px(b))
+        left = min(v[0] for s in strokes for v in s)
+        top = max(v[1] for s in strokes for v in s)
+        painter.setPen(QColor('black'))
+        corner = px((left, top))
+        painter.drawText(QPointF(corner.x(), corner.y() - 6), label)
+    painter.end()
+    image.save(path_png, 'PNG')

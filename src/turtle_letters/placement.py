@@ -68,10 +68,14 @@ class Placement:
             self.spawned = False
             self._spawn(self.sheet.part[0])
 
-    def note_cursor(self):
-        """A restart of ours carries on from where the next letter goes."""
+    def note_cursor(self, chars):
+        """A restart of ours carries on from where the next letter goes; the
+        room's scoreboard grades the text being drawn, at its places
+        (`chars`: (character, place) pairs)."""
         if self.sheet.part is not None:
-            self.claims.mark(cursor=[float(v) for v in self.sheet.cursor])
+            drawing = {'text': ''.join(c for c, _ in chars),
+                       'places': [[float(v) for v in place] for _, place in chars]}
+            self.claims.mark(cursor=[float(v) for v in self.sheet.cursor], drawing=drawing)
 
     def leave(self):
         """On shutdown (Ctrl-C, SIGTERM, the master's word): give the part

@@ -160,8 +160,10 @@ def drive_on_the_wall_clock(meters, seconds_per_tick):
 
 
 def test_the_wall_clock_is_the_labs_way_right_when_idle_short_when_loaded():
-    # idle: 16 ms a tick; the last tick may overshoot by up to one tick's travel
-    assert drive_on_the_wall_clock(3.0, 0.016) == pytest.approx(3.0, abs=0.0161)
+    # idle: 16 ms a tick; whole ticks, the nearest count: at most half a tick off
+    assert drive_on_the_wall_clock(3.0, 0.016) == pytest.approx(3.0, abs=0.0081)
+    assert drive_on_the_wall_clock(3.005, 0.016) == pytest.approx(3.005, abs=0.0081)
+    assert drive_on_the_wall_clock(3.011, 0.016) == pytest.approx(3.011, abs=0.0081)
     # loaded: ticks come every 20 ms, each still moves the turtle 16 ms worth
     assert drive_on_the_wall_clock(3.0, 0.020) == pytest.approx(3.0 * 16 / 20, abs=0.0161)
 
