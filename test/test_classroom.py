@@ -13,7 +13,8 @@ import rostest
 from std_msgs.msg import String
 
 from support.accuracy import expected, vertex_errors, worst_off
-from support.nodes import LogWatch, NodeProcess, PoseRecorder, wait_for_connections, wait_until
+from support.nodes import (LogWatch, NodeProcess, PoseRecorder, subscribed, wait_for_connections,
+                           wait_until)
 from turtle_letters.font import BUILTIN
 from turtle_letters.parts import overlaps
 from turtle_letters.plan import PlannedPose
@@ -44,6 +45,10 @@ class Classroom(unittest.TestCase):
         for chatter, recorder in zip(chatters, cls.recorders.values()):
             wait_for_connections(chatter)
             recorder.wait_connected()
+        for n in cls.names:         # the scoreboard watches each turtle before it moves
+            wait_until(lambda n=n: subscribed('/scoreboard', f'/{n}/pose'), 30,
+                       f"the scoreboard's subscription to /{n}/pose")
+        rospy.sleep(0.5)
         cls.starts = {n: r.last() for n, r in cls.recorders.items()}
         for chatter in chatters:
             chatter.publish(String('P'))

@@ -127,10 +127,14 @@ class DrawingWatch:
     """When a turtle's drawing starts and ends, from its poses (anything
     with turtlesim/Pose's fields), one at a time with the time it came: it
     starts with the first pose that moves, from where the turtle stood, and
-    ends once the turtle has stood still for `settle` s."""
+    ends once the turtle has stood still for `settle` s. A drawing counts
+    only if the turtle was seen standing for `ready` s before it: a watch
+    that joins in the middle of a drawing (or sees it stop for a moment
+    between two strokes) waits for the next one."""
 
-    def __init__(self, settle: float = 2.0) -> None:
-        self.settle = settle
+    def __init__(self, settle: float = 2.0, ready: float = 0.3) -> None:
+        self.settle, self.ready = settle, ready
+        self.still_since = None     # the time the turtle was last seen to stop
         self.reset()
 
     def reset(self) -> None:
@@ -144,14 +148,19 @@ class DrawingWatch:
         if self.started_at is None:
             if not moving:
                 self.stood = pose
+                self.still_since = now if self.still_since is None else self.still_since
                 return None
-            stood = self.stood or pose
-            self.path = [(stood.x, stood.y)]
+            ready = self.still_since is not None and now - self.still_since >= self.ready
+            self.still_since = None
+            if not ready:
+                return None
+            self.path = [(self.stood.x, self.stood.y)]
             self.started_at = now
         self.path.append((pose.x, pose.y))
         if moving:
             self.moved_at = now
         elif now - self.moved_at >= self.settle:
+            self.still_since = self.moved_at
             return 'ended'
         return 'started' if len(self.path) == 2 else None
 

@@ -9,6 +9,8 @@ from PyQt5.QtCore import QPointF, QRectF, Qt  # noqa: E402
 from PyQt5.QtGui import QColor, QFont, QImage, QPainter, QPen  # noqa: E402
 from PyQt5.QtWidgets import QApplication  # noqa: E402
 
+from .grading import distance_to_lines  # noqa: E402
+
 MAIN_SCALE = 90.0          # px per m in the overview
 INSET_SIZE = 240           # px: a box's side
 
@@ -97,19 +99,22 @@ def draw(path_png, strokes, paths, colours, half_box=0.01):
 
 
 CANVAS_M = 11.088889        # turtlesim's canvas, m a side
-CANVAS_SCALE = 60.0         # px per m
+CANVAS_SCALE = 120.0        # px per m
 
 
-def draw_canvas(path_png, drawings):
+def draw_canvas(path_png, drawings, tolerance=0.02):
     """The whole canvas: for each (strokes, path, label, passed), the ideal
-    strokes in grey, the path in green (passed) or red, the label above."""
+    strokes in grey, the path in green (passed) or red where it is within
+    `tolerance` m of them and dotted elsewhere (pen-up moves, mistakes), the
+    label's lines above."""
     app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
     side = int(CANVAS_M * CANVAS_SCALE)
     image = QImage(side, side, QImage.Format_RGB32)
     image.fill(QColor('white'))
     painter = QPainter(image)
     painter.setRenderHint(QPainter.Antialiasing)
-    painter.setFont(QFont('Sans', 8))
+    painter.setFont(QFont('Sans', 7))
+    line_height = painter.fontMetrics().height()
 
     def px(p):
         return QPointF(p[0] * CANVAS_SCALE, (CANVAS_M - p[1]) * CANVAS_SCALE)
@@ -119,13 +124,19 @@ def draw_canvas(path_png, drawings):
         for stroke in strokes:
             for a, b in zip(stroke, stroke[1:]):
                 painter.drawLine(px(a), px(b))
-        painter.setPen(QPen(QColor(27, 120, 55) if passed else QColor(178, 24, 43), 1.5))
+        colour = QColor(27, 120, 55) if passed else QColor(178, 24, 43)
+        on, off = QPen(colour, 1.5), QPen(colour, 1, Qt.DotLine)
         for a, b in zip(path, path[1:]):
+            middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+            painter.setPen(on if distance_to_lines(middle, strokes) <= tolerance else off)
             painter.drawLine(px(a), px(b))
         left = min(v[0] for s in strokes for v in s)
         top = max(v[1] for s in strokes for v in s)
         painter.setPen(QColor('black'))
         corner = px((left, top))
-        painter.drawText(QPointF(corner.x(), corner.y() - 6), label)
+        lines = label.split('\n')
+        for i, line in enumerate(lines):
+            painter.drawText(QPointF(corner.x(), corner.y() - 6 - (len(lines) - 1 - i) * line_height),
+                             line)
     painter.end()
     image.save(path_png, 'PNG')

@@ -13,7 +13,7 @@ import rospy
 from std_msgs.msg import String
 
 from .claims import stored_parts
-from .grader import TurtleGrader
+from .grader import Saver, TurtleGrader
 from .grading import Tolerances, ideal_text
 from .settings import ParameterError, Settings
 
@@ -24,7 +24,7 @@ LOOK_PERIOD = 2.0           # s between looks for new students' turtles
 class Scoreboard:
     def __init__(self, tolerances, folder):
         self.tolerances, self.folder = tolerances, folder
-        os.makedirs(folder, exist_ok=True)
+        self.save = Saver(folder)           # each drawing's report and picture
         self.graders, self.rows, self.drawings = {}, {}, {}
         self._lock = threading.Lock()
         self.table = rospy.Publisher('scoreboard', String, queue_size=10, latch=True)
@@ -59,6 +59,7 @@ class Scoreboard:
 
     def _tell(self, report, strokes, path):
         name = report['turtle'].strip('/')
+        self.save(report, strokes, path)
         with self._lock:
             self.rows[name] = report
             self.drawings[name] = (strokes, path)
@@ -71,7 +72,7 @@ class Scoreboard:
         from .picture import draw_canvas     # Qt: only once there is something to draw
         draw_canvas(os.path.join(self.folder, 'scoreboard.png'),
                     [(strokes, path, score_label(name, rows[name]), rows[name]['verdict'] == 'pass')
-                     for name, (strokes, path) in sorted(drawings.items())])
+                     for name, (strokes, path) in sorted(drawings.items())], self.tolerances.vertex)
 
 
 def table_lines(rows):
@@ -83,7 +84,7 @@ def table_lines(rows):
 
 
 def score_label(name, report):
-    return (f"{name} {report['letter']}: {report['verdict'].upper()} "
+    return (f"{name} {report['letter']}\n{report['verdict'].upper()} "
             f"{report['worst_vertex_mm']:.1f} mm {report['drawing_s']:.0f} s")
 
 

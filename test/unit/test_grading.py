@@ -79,3 +79,17 @@ def test_a_drawing_starts_with_the_first_move_and_ends_after_standing_still():
     assert events == [None, None, 'started', None, None, None, 'ended']
     assert watch.path[:3] == [(1.0, 5.0), (1.5, 5.0), (2.0, 5.0)]
     assert watch.seconds == 1.0
+
+
+def test_a_watch_that_joins_mid_drawing_waits_for_the_next_one():
+    watch = DrawingWatch(settle=2.0, ready=0.3)
+
+    def pose(x, moving):
+        return SimpleNamespace(x=x, y=5.0, theta=0.0, linear_velocity=moving, angular_velocity=0.0)
+    events = [watch.feed(t, pose(x, moving)) for t, x, moving in [
+        (0.0, 1.0, 1), (0.1, 1.1, 1),               # joined while it moves
+        (0.2, 1.1, 0), (0.25, 1.2, 1),              # a stop between two strokes
+        (0.3, 1.3, 0), (2.0, 1.3, 0),               # the drawing is over
+        (2.5, 1.4, 1), (3.0, 1.5, 1), (3.1, 1.5, 0), (5.2, 1.5, 0)]]   # the next one
+    assert events == [None] * 6 + ['started', None, None, 'ended']
+    assert watch.path[0] == (1.3, 5.0)
