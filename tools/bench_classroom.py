@@ -4,9 +4,14 @@
   spawned, all drawing the N at once (timed mode, the lab's speeds, letters
   1 m high so that 30 parts fit): the simulator's rate and CPU while they
   draw, each controller's CPU, every letter's worst vertex error.
+  The room's scoreboard grades them all: its CPU per graded turtle, and how
+  many it graded a pass.
 - A parallel word of 5 letters against its slowest letter drawn alone by
   one turtle from the same place.
 """
+import json
+import os
+import tempfile
 import time
 
 import rospy
@@ -14,7 +19,7 @@ from std_msgs.msg import String
 from std_srvs.srv import Empty
 
 from support.accuracy import expected, vertex_errors
-from support.nodes import PoseRecorder, connections, wait_until
+from support.nodes import PoseRecorder, connections, subscribed, wait_until
 from turtle_letters.procstat import cpu_seconds
 from turtle_letters.font import BUILTIN
 from turtle_letters.plan import Layout, PlannedPose, Turn, plan_strokes
@@ -23,6 +28,7 @@ SIZE = 1.0
 PARALLEL_WORD = 'NORTH'
 WORD_ANGULAR_SPEED = 1.0    # rad/s: the word group turns faster, to take a minute, not five
 VERTEX_TARGET_MM = 8.0      # a single letter's in timed mode
+SCOREBOARD_TARGET_PCT = 2.0     # CPU per graded turtle
 
 
 def _fresh_canvas():
@@ -61,7 +67,14 @@ def classroom_run(processes, sim_pid, turtles):
     _fresh_canvas()
     names = [f'student{i:02d}' for i in range(turtles)]
     controllers = _start_controllers(processes, names, f'_size:={SIZE}')
+    grades = tempfile.mkdtemp(prefix='bench_grades_')
+    scoreboard = processes.start('scoreboard', 'rosrun', 'turtle_letters', 'scoreboard.py',
+                                 f'_out:={grades}')
+    controllers.append(scoreboard)
     try:
+        for name in names:
+            wait_until(lambda: subscribed('/scoreboard', f'/{name}/pose'), 60,
+                       f'the scoreboard watching {name}')
         recorders = [PoseRecorder(turtle=name) for name in names]
         chatters = [rospy.Publisher(f'/{name}/chatter', String, queue_size=1) for name in names]
         for chatter, recorder in zip(chatters, recorders):
@@ -78,9 +91,11 @@ def classroom_run(processes, sim_pid, turtles):
         for chatter in chatters:
             chatter.publish(String('P'))
         _wait_until_all_drew(recorders, 600)
+        wait_until(lambda: len(_grades(grades)) == turtles, 60, 'the scoreboard to grade them all')
         span = time.time() - t0
         sim_cpu = cpu_seconds(sim_pid) - sim_cpu0
         controller_cpu = [100 * (cpu_seconds(c.pid) - cpu0[c.pid]) / span for c in controllers]
+        scoreboard_cpu = controller_cpu.pop()
         with recorders[0].lock:
             stamps = [t for t, _ in recorders[0].poses]
         errors = []
@@ -100,7 +115,17 @@ def classroom_run(processes, sim_pid, turtles):
             'controller_cpu_median_pct': sorted(controller_cpu)[len(controller_cpu) // 2],
             'vertex_max_mm': max(errors), 'vertex_mm_each': errors,
             'over_target': sum(e > VERTEX_TARGET_MM for e in errors), 'drawing_s': max(drawing),
-            'bench_cpu_pct': 100 * (time.process_time() - bench_cpu0) / span}
+            'bench_cpu_pct': 100 * (time.process_time() - bench_cpu0) / span,
+            'scoreboard_cpu_per_turtle_pct': scoreboard_cpu / turtles,
+            'graded_pass': sum(r['verdict'] == 'pass' for r in _grades(grades).values())}
+
+
+def _grades(folder):
+    try:
+        with open(os.path.join(folder, 'scoreboard.json')) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return {}
 
 
 def _letter_seconds(char, place, start):
@@ -183,7 +208,10 @@ def classroom_lines(results):
             f"{c['controller_cpu_pct']:.2f}{'!' if c['controller_cpu_pct'] > 3 else ''}%; worst "
             f"vertex {c['vertex_max_mm']:.2f}{'!' if c['over_target'] else ''} mm "
             f"({c['over_target']} letters over {VERTEX_TARGET_MM:g} mm); "
-            f"drawing {c['drawing_s']:.1f} s")
+            f"drawing {c['drawing_s']:.1f} s; scoreboard "
+            f"{c['scoreboard_cpu_per_turtle_pct']:.2f}"
+            f"{'!' if c['scoreboard_cpu_per_turtle_pct'] > SCOREBOARD_TARGET_PCT else ''}% CPU "
+            f"per turtle, {c['graded_pass']} of {c['turtles']} graded a pass")
     w = results.get('parallel_word')
     if w:
         ratio = w['word_s'] / w['slowest_alone_s']
@@ -193,6 +221,7 @@ def classroom_lines(results):
             f"{ratio:.2f}{'!' if ratio > 1.2 else ''} x; worst vertex "
             f"{w['vertex_max_mm']:.2f}{'!' if w['vertex_max_mm'] > 8 else ''} mm")
     lines.append('Classroom targets: simulator 62.5 Hz +-1%, <= 15% CPU with 30 turtles; '
-                 'controller <= 3% CPU each; vertex <= 8 mm; a parallel word <= 1.2 x its '
+                 'controller <= 3% CPU each; vertex <= 8 mm; scoreboard <= '
+                 f'{SCOREBOARD_TARGET_PCT:g}% CPU per graded turtle; a parallel word <= 1.2 x its '
                  'slowest letter alone.')
     return lines

@@ -32,6 +32,13 @@ ELSEWHERE = {
     "rostopic pub -1 /alice/chatter std_msgs/String \"data: 'P'\"": 'test/network',
     'rostopic echo /draw/feedback': 'test/action.test follows the same feedback with a client',
     'rosservice call /pause true': 'test/action.test pauses a drawing mid-move, then resumes it',
+    'roslaunch turtle_letters grade.launch': 'test/grade.test includes it and sends the P',
+    'rostest turtle_letters grade.test': 'make test runs every rostest',
+    'rostest turtle_letters grade.test controller:="turtle_letters lab_n.py" '
+    'params:="{second_turn: 200}"': 'test/grade_wrong.test: the same controller and parameters',
+    'rostest turtle_letters grade.test controller:="my_lab my_controller.py"':
+        "a student's package: test/grade.test with this package's controller",
+    'roslaunch turtle_letters classroom.launch grade:=true': 'test/classroom.test',
 }
 RECIPE = 'doc/install.md'       # test/workspace/test_workspaces.py runs it line by line
 # Sent to a launch, in this order, each with what its controller then says
