@@ -58,21 +58,29 @@ class Scoreboard:
         return ideal
 
     def _tell(self, report, strokes, path):
+        """A drawing graded (on a turtle's own thread): the table and the
+        files anew, one turtle at a time."""
         name = report['turtle'].strip('/')
-        self.save(report, strokes, path)
         with self._lock:
+            self.save(report, strokes, path)
             self.rows[name] = report
             self.drawings[name] = (strokes, path)
             lines = table_lines(self.rows)
-            rows, drawings = dict(self.rows), dict(self.drawings)
-        rospy.loginfo('Scoreboard:\n%s', '\n'.join(lines))
-        self.table.publish(String('\n'.join(lines)))
-        with open(os.path.join(self.folder, 'scoreboard.json'), 'w') as f:
-            json.dump(rows, f, indent=1)
+            rospy.loginfo('Scoreboard:\n%s', '\n'.join(lines))
+            self.table.publish(String('\n'.join(lines)))
+            self._write()
+
+    def _write(self):
         from .picture import draw_canvas     # Qt: only once there is something to draw
+        json_path = os.path.join(self.folder, 'scoreboard.json')
+        with open(json_path + '.new', 'w') as f:
+            json.dump(self.rows, f, indent=1)
+        os.replace(json_path + '.new', json_path)       # a reader never sees half of it
         draw_canvas(os.path.join(self.folder, 'scoreboard.png'),
-                    [(strokes, path, score_label(name, rows[name]), rows[name]['verdict'] == 'pass')
-                     for name, (strokes, path) in sorted(drawings.items())], self.tolerances.vertex)
+                    [(strokes, path, score_label(name, self.rows[name]),
+                      self.rows[name]['verdict'] == 'pass')
+                     for name, (strokes, path) in sorted(self.drawings.items())],
+                    self.tolerances.vertex)
 
 
 def table_lines(rows):
