@@ -188,6 +188,7 @@ def main():
     def ideal(start):
         return settings.letter, ideal_letter(settings.letter, settings.size, settings.font, start)
     grader = TurtleGrader(settings.turtle, ideal, tolerances, tell,
+                          settle=float(rospy.get_param('~settle', SETTLE)),
                           timeout=float(rospy.get_param('~timeout', 300.0)))
     rospy.loginfo('Grading %s: %r at %g m in font %s, vertices within %.0f mm; waiting for it '
                   'to move', grader.turtle, settings.letter, settings.size, settings.font.name,
