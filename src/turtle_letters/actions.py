@@ -59,8 +59,9 @@ class Order:
             paused=self.control.paused))
 
     def finished(self, drawn, message):
-        """The end, said in the log and (a goal's) as its result."""
-        (rospy.loginfo if drawn else rospy.logerr)('%s', message)
+        """The end, said in the log (a cancel asked for is no error) and (a
+        goal's) as its result."""
+        (rospy.loginfo if drawn or self.control.cancelled else rospy.logerr)('%s', message)
         if self.handle is None:
             return
         plan = self.planned.plan if self.planned else None
