@@ -34,17 +34,18 @@ class ControllerUse:
 
     def __init__(self, topic):
         self.node, self.pid, self.note = None, None, ''
+        master = rosgraph.Master(rospy.get_name())
         try:
-            state = rosgraph.Master(rospy.get_name()).getSystemState()
+            state = master.getSystemState()
             nodes = [n for t, ns in state[0] if t == topic for n in ns if n != rospy.get_name()]
+            uri = master.lookupNode(nodes[0]) if len(nodes) == 1 else None
         except (OSError, rosgraph.MasterException) as e:
             self.note = f'the master did not say who publishes {topic}: {e}'
             return
-        if len(nodes) != 1:
+        if uri is None:
             self.note = f'{len(nodes)} nodes publish {topic}: {", ".join(nodes) or "none"}'
             return
         self.node = nodes[0]
-        uri = rosgraph.Master(rospy.get_name()).lookupNode(self.node)
         host = urllib.parse.urlparse(uri).hostname
         if not _here(host):
             self.note = f'{self.node} runs on {host}, not on this machine'
@@ -68,12 +69,13 @@ class ControllerUse:
 
 
 def _here(host):
+    """Whether `host` is this machine (so its processes' CPU can be read)."""
     try:
         address = socket.gethostbyname(host)
+        return address.startswith('127.') or address in socket.gethostbyname_ex(
+            socket.gethostname())[2]
     except OSError:
         return False
-    return address.startswith('127.') or address in socket.gethostbyname_ex(
-        socket.gethostname())[2]
 
 
 class TurtleGrader:
