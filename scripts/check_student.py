@@ -13,7 +13,7 @@ break the command).
 import ast
 import sys
 
-from turtle_letters.liveness import running
+from turtle_letters.classroom.liveness import running
 from turtle_letters.settings import student_name_problem
 
 

@@ -17,10 +17,10 @@ from turtlesim.msg import Pose
 
 from support.accuracy import LAB_N_VERTICES, expected, vertex_errors, worst_off
 from support.nodes import LogWatch, PoseRecorder, wait_for_connections, wait_until
-from turtle_letters.font import BUILTIN
+from turtle_letters.letters.font import BUILTIN
 from turtle_letters.msg import DrawAction, DrawGoal
-from turtle_letters.plan import PlannedPose
-from turtle_letters.sheet import Sheet
+from turtle_letters.letters.geometry import PlannedPose
+from turtle_letters.letters.sheet import Sheet
 
 TOLERANCE = 0.002       # m: timed mode on the simulator's clock, paused or not
 PAUSE = 3.0             # s: the pause, mid-move

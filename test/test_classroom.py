@@ -15,9 +15,9 @@ from std_msgs.msg import String
 from support.accuracy import expected, vertex_errors, worst_off
 from support.nodes import (LogWatch, NodeProcess, PoseRecorder, subscribed, wait_for_connections,
                            wait_until)
-from turtle_letters.font import BUILTIN
-from turtle_letters.parts import overlaps
-from turtle_letters.plan import PlannedPose
+from turtle_letters.letters.font import BUILTIN
+from turtle_letters.classroom.parts import overlaps
+from turtle_letters.letters.geometry import PlannedPose
 
 LETTERS = 'NAK7EZMWX4'
 SIZE = 1.0

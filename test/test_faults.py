@@ -17,7 +17,7 @@ from turtlesim.msg import Pose
 from support.accuracy import LAB_N_VERTICES
 from support.nodes import (LogWatch, NodeProcess, PoseRecorder, connections, node_pid, simulator,
                            subscribed, wait_for_connections, wait_until)
-from turtle_letters.procstat import cpu_seconds, rss_mb
+from turtle_letters.grading.procstat import cpu_seconds, rss_mb
 
 # Feedback mode at higher speeds draws the N in seconds; the timing of the
 # lab's mode is not what these tests are about.

@@ -14,7 +14,9 @@ from turtlesim.msg import Pose
 
 from support.accuracy import expected, vertex_errors, worst_off
 from support.nodes import LogWatch, PoseRecorder, wait_until
-from turtle_letters.plan import Layout, PlannedPose, Turn, plan_strokes
+from turtle_letters.letters.layout import Layout
+from turtle_letters.letters.geometry import PlannedPose
+from turtle_letters.letters.primitives import Turn, plan_strokes
 
 TOLERANCE = 0.05            # m: a single letter's, as test_draw_letter's
 LINEAR_SPEED = 1.0          # m/s, the default

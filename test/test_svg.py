@@ -17,12 +17,12 @@ from turtlesim.msg import Pose as PoseMsg
 from support.accuracy import distances_off, touches_a_wall, vertex_errors
 from support.nodes import LogWatch, PoseRecorder, wait_until
 from support.pictures import pixel
-from turtle_letters import svgart
-from turtle_letters.drawing import plan_picture
-from turtle_letters.motion import SIM_TICK
-from turtle_letters.plan import PlannedPose
+from turtle_letters.letters import svgart
+from turtle_letters.letters.plan import plan_picture
+from turtle_letters.motion.executors import SIM_TICK
+from turtle_letters.letters.geometry import PlannedPose
 from turtle_letters.settings import Settings
-from turtle_letters.sheet import Sheet
+from turtle_letters.letters.sheet import Sheet
 
 TOLERANCE = 0.001           # m: the target, for every vertex and every pose
 CONTROLLER = '/turtlebot_controller'

@@ -12,7 +12,7 @@ import rostest
 from std_msgs.msg import String
 
 from support.nodes import LogWatch, NodeProcess, node_pid, wait_until
-from turtle_letters.procstat import cpu_seconds
+from turtle_letters.grading.procstat import cpu_seconds
 from support.terminal import Terminal
 
 TALKER = '/talker'

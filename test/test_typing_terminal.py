@@ -12,7 +12,9 @@ from turtlesim.msg import Pose as PoseMsg
 from support.accuracy import touches_a_wall, vertex_errors
 from support.nodes import LogWatch, PoseRecorder, wait_until
 from support.terminal import Terminal
-from turtle_letters.plan import Layout, glyph_for, glyph_strokes
+from turtle_letters.letters.font import BUILTIN
+from turtle_letters.letters.layout import Layout
+from turtle_letters.letters.plan import glyph_strokes
 
 SIZE = 1.5
 LAUNCH = ('roslaunch turtle_letters draw_letter.launch headless:=true typing:=true '
@@ -32,8 +34,8 @@ class TypingInATerminal(unittest.TestCase):
 
         term.send_keys('h', 'i')          # the second key arrives mid-drawing
         places, _ = Layout((first.x, first.y), SIZE).reserve('HI')
-        h = [v for s in glyph_strokes(glyph_for('H'), places[0], SIZE) for v in s]
-        i = [v for s in glyph_strokes(glyph_for('I'), places[1], SIZE) for v in s]
+        h = [v for s in glyph_strokes(BUILTIN.glyph('H'), places[0], SIZE) for v in s]
+        i = [v for s in glyph_strokes(BUILTIN.glyph('I'), places[1], SIZE) for v in s]
         wait_until(lambda: max(vertex_errors(poses.path() or [(0, 0)], i)) < 0.002, 200,
                    'every vertex of the I', term.screen)
         path = poses.path()

@@ -18,9 +18,10 @@ from support.accuracy import (distance_to_polyline, distances_off, expected, tou
                               vertex_errors)
 from support.nodes import LogWatch, PoseRecorder, wait_until
 from support.pictures import pixel
-from turtle_letters.hershey import load_font
-from turtle_letters.motion import SIM_TICK
-from turtle_letters.plan import Layout, PlannedPose
+from turtle_letters.letters.hershey import load_font
+from turtle_letters.motion.executors import SIM_TICK
+from turtle_letters.letters.layout import Layout
+from turtle_letters.letters.geometry import PlannedPose
 
 VERTEX_TOLERANCE = 0.002      # m (the 1 mm target is the benchmark's)
 BACKGROUND = (69, 86, 255)

@@ -33,14 +33,15 @@ from std_msgs.msg import String  # noqa: E402
 from std_srvs.srv import Empty  # noqa: E402
 from turtlesim.srv import Spawn  # noqa: E402
 
-from turtle_letters.font import BUILTIN  # noqa: E402
-from turtle_letters.grading import ideal_letter, score  # noqa: E402
-from turtle_letters.plan import PlannedPose, glyph_for, word_strokes  # noqa: E402
+from turtle_letters.letters.font import BUILTIN  # noqa: E402
+from turtle_letters.grading.scoring import ideal_letter, score  # noqa: E402
+from turtle_letters.letters.geometry import PlannedPose  # noqa: E402
+from turtle_letters.letters.plan import glyph_strokes  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'test'))
 from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # noqa: E402
                            wait_until)
-from turtle_letters.procstat import cpu_seconds, rss_mb  # noqa: E402
+from turtle_letters.grading.procstat import cpu_seconds, rss_mb  # noqa: E402
 from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
 
 TARGETS = {  # figure -> (limit, which runs it applies to)
@@ -159,24 +160,25 @@ def one_run(args, processes, recorder, chatter, sim_pid, mode):
 
 def word_run(processes, recorder, font, size=1.0, speed=1.0):
     """WORD in a Hershey font, smooth mode, from the ~text topic."""
-    from turtle_letters.drawing import plan_text
-    from turtle_letters.route import travel_length
-    from turtle_letters.sheet import Sheet
+    from turtle_letters.letters.plan import plan_text
+    from turtle_letters.letters.route import travel_length
+    from turtle_letters.letters.sheet import Sheet
     settings = smooth_settings(font, size, speed)
     commands, poses = smooth_run(processes, recorder, settings, '/text', WORD)
     start = PlannedPose(5.544445, 5.544445, 0.0)
     places = Sheet(size, settings.font).reserve(WORD, start)[0]
     plan = plan_text(WORD, places, start, settings)
-    reading = word_strokes(WORD, places, size, settings.font)
+    reading = [stroke for char, place in zip(WORD, places) if place is not None
+               for stroke in glyph_strokes(settings.font.glyph(char), place, size)]
     return dict(measure(plan, commands, poses, speed), font=font,
                 reading_travel_m=travel_length(reading, plan.start))
 
 
 def svg_run(processes, recorder, size=3.0, speed=1.0):
     """doc/flower.svg, smooth mode, from the ~svg topic."""
-    from turtle_letters import svgart
-    from turtle_letters.drawing import plan_picture
-    from turtle_letters.sheet import Sheet
+    from turtle_letters.letters import svgart
+    from turtle_letters.letters.plan import plan_picture
+    from turtle_letters.letters.sheet import Sheet
     settings = smooth_settings('builtin', size, speed)
     commands, poses = smooth_run(processes, recorder, settings, '/svg', SVG)
     start = PlannedPose(5.544445, 5.544445, 0.0)
@@ -378,7 +380,7 @@ def main():
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
-    if glyph_for(args.letter) is None or len(args.letter) != 1:
+    if BUILTIN.glyph(args.letter) is None or len(args.letter) != 1:
         parser.error(f'--letter {args.letter!r}: one of A-Z, 0-9')
     os.makedirs(args.out, exist_ok=True)
     sim_kind = open(os.path.join(os.environ['WS'], '.simulator')).read().strip()
@@ -447,7 +449,7 @@ def main():
     with open(os.path.join(args.out, 'bench.json'), 'w') as f:
         json.dump(results, f, indent=1)
     picture = os.path.join(args.out, 'bench.png')
-    from turtle_letters.picture import draw
+    from turtle_letters.grading.picture import draw
     draw(picture, ideal_strokes(args.letter, args.size), paths, COLOURS)
     print(f'\nbench: wrote {args.out}/bench.json, bench.txt and bench.png')
 

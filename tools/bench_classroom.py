@@ -20,9 +20,11 @@ from std_srvs.srv import Empty
 
 from support.accuracy import expected, vertex_errors
 from support.nodes import PoseRecorder, connections, subscribed, wait_until
-from turtle_letters.procstat import cpu_seconds
-from turtle_letters.font import BUILTIN
-from turtle_letters.plan import Layout, PlannedPose, Turn, plan_strokes
+from turtle_letters.grading.procstat import cpu_seconds
+from turtle_letters.letters.font import BUILTIN
+from turtle_letters.letters.layout import Layout
+from turtle_letters.letters.geometry import PlannedPose
+from turtle_letters.letters.primitives import Turn, plan_strokes
 
 SIZE = 1.0
 PARALLEL_WORD = 'NORTH'

@@ -1,24 +1,29 @@
-"""The turtle controller node: the lab's class, TurtleController. A trigger on
-`chatter` (or a goal of the draw action, actions.py) becomes a job (jobs.py);
-the drawing thread plans it (drawing.py) and has its mode carry the plan out
-on the turtle (turtle.py)."""
+"""The turtle controller node: the lab's class, TurtleController.
+
+From a trigger to a command: "P" on `chatter` (or a goal of the draw
+action, actions/server.py) becomes a job (actions/jobs.py); the drawing
+thread plans it in one place (letters/plan.py) and has its mode
+(motion/modes.py) carry the plan out on the turtle (turtle.py). In timed
+mode, the lab's N is the six calls of lab.py, run as they are written."""
 import sys
 import threading
 
 import rospy
 from std_msgs.msg import String
 
-from .actions import DrawServer, describe
-from .diagnosis import POSE_PATIENCE, why_stopped
-from .drawing import MODES, SvgFile, plan_request
-from .driver import TurtleDriver
-from .jobs import TYPED_AHEAD, Jobs, chatter_request, text_request
-from .liveness import refuse_a_second
-from .parallel import Spares, draw_in_parallel
-from .placement import Placement, Refused
-from .plan import PlannedPose, shown
+from .actions.jobs import TYPED_AHEAD, Jobs, chatter_request, text_request
+from .actions.server import DrawServer, describe
+from .classroom.diagnosis import POSE_PATIENCE, why_stopped
+from .classroom.liveness import refuse_a_second
+from .classroom.placement import Placement, Refused
+from .classroom.spares import Spares, draw_in_parallel
+from .letters.font import shown
+from .letters.geometry import PlannedPose
+from .letters.plan import SvgFile, plan_request
+from .letters.sheet import Sheet
+from .motion.driver import TurtleDriver
+from .motion.modes import MODES
 from .settings import ParameterError, Settings, quote_unreadable
-from .sheet import Sheet
 from .turtle import Turtle, pose_text
 
 IGNORED_LOG_PERIOD = 10.0   # s: an ignored message is said once, then at most this often
@@ -27,20 +32,10 @@ THROTTLED = f' (said at most every {IGNORED_LOG_PERIOD:g} s)'
 
 class TurtleController:
     """The lab's class. On the trigger ("P" on `chatter`) its turtle draws
-    `~letter` (N), in `~mode` (timed: the lab's rotate and move). Also draws
-    `~text` and `~svg` (std_msgs/String), goals of the action `draw` and, in
-    typing mode, every key. Parameters: settings.PARAMETERS."""
-
-    def draw_the_labs_n(self):
-        """The lab's N in the lab's own words. "P" draws exactly this: the
-        builtin font plans these six calls (test_labs_n holds them equal)."""
-        turtle = self.turtle
-        turtle.rotate(90)
-        turtle.move(3.0)
-        turtle.rotate(225)
-        turtle.move(3.5)
-        turtle.rotate(135)
-        turtle.move(3.0)
+    `~letter` (N: lab.draw_the_labs_n), in `~mode` (timed: the lab's rotate
+    and move). Also draws `~text` and `~svg` (std_msgs/String), goals of the
+    action `draw` and, in typing mode, every key. Parameters:
+    settings.PARAMETERS."""
 
     def __init__(self, settings: Settings):
         self.settings = settings
@@ -48,7 +43,7 @@ class TurtleController:
         self.turtle = Turtle(self.driver, settings)
         self.sheet = Sheet(settings.size, settings.font)
         self.placement = Placement(self.driver, settings, self.sheet)
-        self.spares = Spares(settings, self.driver.name)
+        self.spares = Spares(settings, self.driver.name, Turtle)
         self.jobs = Jobs()
         self.actions = DrawServer(self.jobs, settings.font)
         rospy.on_shutdown(self.leave)

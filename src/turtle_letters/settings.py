@@ -9,11 +9,12 @@ from typing import Callable, NamedTuple
 
 import yaml
 
-from .font import BUILTIN
-from .hershey import FontError, load_font
-from .drawing import MODES
-from .motion import CLOCKS
-from .plan import MARGIN, TURN_DIRECTIONS, WORLD_SIZE, largest_size
+from .letters.font import BUILTIN
+from .letters.geometry import TURN_DIRECTIONS
+from .letters.hershey import FontError, load_font
+from .letters.layout import MARGIN, WORLD_SIZE, largest_size
+from .motion.executors import CLOCKS
+from .motion.modes import MODES
 
 
 

@@ -17,9 +17,9 @@ import tty
 import rospy
 from std_msgs.msg import String
 
-from .jobs import TYPED_AHEAD
+from .actions.jobs import TYPED_AHEAD
+from .classroom.liveness import refuse_a_second
 from .keys import READY, SHUTDOWN, TIMED_OUT, message_for, pass_keys
-from .liveness import refuse_a_second
 from .settings import ParameterError, quote_unreadable, read_parameter
 
 WAKE_UP = 0.5   # s: how often a blocked wait looks whether ROS shut the node down

@@ -9,12 +9,13 @@ import time
 
 import rospy
 
-from .control import Cancelled, Control
-from .diagnosis import STALL_SECONDS, stall_diagnosis
-from .drawing import DEFAULT_PEN
-from .driver import DrawingAborted
-from .motion import STOP, FeedbackExecutor, SmoothExecutor, StallWatch, TimedExecutor
-from .plan import Line, Turn, wrap
+from .classroom.diagnosis import STALL_SECONDS, stall_diagnosis
+from .letters.geometry import wrap
+from .letters.plan import DEFAULT_PEN
+from .letters.primitives import Line, Turn
+from .motion.control import Cancelled, Control
+from .motion.driver import DrawingAborted
+from .motion.executors import STOP, FeedbackExecutor, SmoothExecutor, StallWatch, TimedExecutor
 
 
 class Turtle:

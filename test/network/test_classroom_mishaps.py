@@ -23,8 +23,8 @@ import yaml
 from support.accuracy import expected, vertex_errors, worst_off
 from support.netns import classroom as network_classroom
 from support.netns import output, read_poses, stop, wait_for_line
-from turtle_letters.font import BUILTIN
-from turtle_letters.plan import PlannedPose
+from turtle_letters.letters.font import BUILTIN
+from turtle_letters.letters.geometry import PlannedPose
 
 ADDRESSES = {'master': 1, 'ann': 2, 'ben': 3, 'cat': 4, 'dan': 5, 'fay': 6, 'gus': 7}
 TOLERANCE = 0.05        # m: a single letter's, as test_draw_letter's
@@ -32,7 +32,7 @@ FAST = ['talker:=false', 'angular_speed:=1.0']
 # Asked on the master's machine: the parts, and which of their controllers answer.
 LIVE_PARTS = '''
 import rospy, yaml
-from turtle_letters.claims import live, stored_parts
+from turtle_letters.classroom.claims import live, stored_parts
 parts = stored_parts('/turtle_letters/parts')
 alive = live(parts)
 print(yaml.safe_dump({n: p for n, p in parts.items() if n in alive}))

@@ -21,8 +21,8 @@ import pytest
 from support.accuracy import expected, vertex_errors, worst_off
 from support.netns import classroom as network_classroom
 from support.netns import log_time, output, read_poses, stop, wait_for_line
-from turtle_letters.font import BUILTIN
-from turtle_letters.plan import PlannedPose
+from turtle_letters.letters.font import BUILTIN
+from turtle_letters.letters.geometry import PlannedPose
 
 ADDRESSES = {'master': 1, 'alice': 2, 'bob': 3, 'eve': 4}
 UNKNOWN_TO_MASTER = 'eve'

@@ -1,8 +1,7 @@
 """The controller's parameters: defaults, and one clear refusal per bad value."""
 import pytest
 
-from turtle_letters.settings import (ParameterError, Settings, quote_unreadable,
-                                     student_name_problem)
+from turtle_letters.settings import ParameterError, Settings, quote_unreadable, student_name_problem
 
 
 def settings(**given):

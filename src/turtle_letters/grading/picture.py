@@ -1,0 +1,142 @@
+"""A drawing's picture: the ideal strokes in grey, recorded paths in colour,
+and each vertex enlarged in a box of its own. The grader and the benchmark
+draw theirs with it. Qt offscreen, no ROS."""
+import math
+import os
+
+os.environ.setdefault('QT_QPA_PLATFORM', 'offscreen')
+from PyQt5.QtCore import QPointF, QRectF, Qt  # noqa: E402
+from PyQt5.QtGui import QColor, QFont, QImage, QPainter, QPen  # noqa: E402
+from PyQt5.QtWidgets import QApplication  # noqa: E402
+
+from .scoring import distance_to_lines  # noqa: E402
+
+MAIN_SCALE = 90.0          # px per m in the overview
+INSET_SIZE = 240           # px: a box's side
+
+
+def draw(path_png, strokes, paths, colours, half_box=0.01):
+    """strokes: ideal polylines in m; paths: {label: [[(x, y), ...], ...]}
+    drawn in colours[label] (r, g, b); a box shows +-half_box m around a vertex."""
+    app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
+    colours = {label: QColor(*rgb) for label, rgb in colours.items()}
+    inset_scale = INSET_SIZE / (2 * half_box)            # px per m in the boxes
+    bar = 10 ** math.floor(math.log10(half_box / 2))     # m: the scale bar's length
+    vertices = [v for s in strokes for v in s]
+    xs, ys = [v[0] for v in vertices], [v[1] for v in vertices]
+    margin = 0.4
+    x0, y1 = min(xs) - margin, max(ys) + margin
+    main_w = int((max(xs) - min(xs) + 2 * margin) * MAIN_SCALE)
+    main_h = int((max(ys) - min(ys) + 2 * margin) * MAIN_SCALE)
+    columns = 2
+    rows = (len(vertices) + columns - 1) // columns
+    width = main_w + 20 + columns * (INSET_SIZE + 10) + 10
+    height = max(main_h, rows * (INSET_SIZE + 30)) + 60
+
+    image = QImage(width, height, QImage.Format_RGB32)
+    image.fill(QColor('white'))
+    painter = QPainter(image)
+    painter.setRenderHint(QPainter.Antialiasing)
+    painter.setFont(QFont('Sans', 9))
+
+    def polyline(points, to_px, pen):
+        painter.setPen(pen)
+        for a, b in zip(points, points[1:]):
+            painter.drawLine(to_px(a), to_px(b))
+
+    def overview(p):
+        return QPointF(10 + (p[0] - x0) * MAIN_SCALE, 40 + (y1 - p[1]) * MAIN_SCALE)
+
+    painter.setPen(QColor('black'))
+    painter.drawText(10, 20, f'Ideal strokes (grey) and recorded paths; boxes: '
+                             f'+-{half_box * 1000:g} mm around each vertex')
+    for stroke in strokes:
+        polyline(stroke, overview, QPen(QColor(200, 200, 200), 6))
+    for key, runs in paths.items():
+        for run in runs:
+            polyline(run, overview, QPen(colours[key], 1))
+
+    for i, (vx, vy) in enumerate(vertices):
+        left = main_w + 20 + (i % columns) * (INSET_SIZE + 10)
+        top = 40 + (i // columns) * (INSET_SIZE + 30)
+        box = QRectF(left, top, INSET_SIZE, INSET_SIZE)
+        painter.setClipRect(box)
+        painter.fillRect(box, QColor(250, 250, 250))
+
+        def inset(p, vx=vx, vy=vy, left=left, top=top):
+            return QPointF(left + INSET_SIZE / 2 + (p[0] - vx) * inset_scale,
+                           top + INSET_SIZE / 2 - (p[1] - vy) * inset_scale)
+        for stroke in strokes:
+            polyline(stroke, inset, QPen(QColor(200, 200, 200), 3))
+        for key, runs in paths.items():
+            for run in runs:
+                near = [p for p in run
+                        if abs(p[0] - vx) < 3 * half_box and abs(p[1] - vy) < 3 * half_box]
+                polyline(near, inset, QPen(colours[key], 1.5))
+                painter.setBrush(colours[key])
+                for p in near:
+                    painter.drawEllipse(inset(p), 1.5, 1.5)
+        painter.setClipping(False)
+        painter.setBrush(Qt.NoBrush)
+        painter.setPen(QColor('black'))
+        painter.drawRect(box)
+        painter.drawLine(QPointF(left + 10, top + INSET_SIZE - 10),
+                         QPointF(left + 10 + bar * inset_scale, top + INSET_SIZE - 10))
+        painter.drawText(int(left + 10), int(top + INSET_SIZE - 14), f'{bar * 1000:g} mm')
+        painter.drawText(int(left), int(top + INSET_SIZE + 16),
+                         f'vertex {i + 1} ({vx:.3f}, {vy:.3f})')
+
+    legend_y = height - 15
+    x = 10
+    for key in paths:
+        painter.setPen(QPen(colours[key], 3))
+        painter.drawLine(x, legend_y - 4, x + 20, legend_y - 4)
+        painter.setPen(QColor('black'))
+        painter.drawText(x + 25, legend_y, key)
+        x += 140
+    painter.end()
+    image.save(path_png, 'PNG')
+
+
+CANVAS_M = 11.088889        # turtlesim's canvas, m a side
+CANVAS_SCALE = 120.0        # px per m
+
+
+def draw_canvas(path_png, drawings, tolerance=0.02):
+    """The whole canvas: for each (strokes, path, label, passed), the ideal
+    strokes in grey, the path in green (passed) or red where it is within
+    `tolerance` m of them and dotted elsewhere (pen-up moves, mistakes), the
+    label's lines above."""
+    app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
+    side = int(CANVAS_M * CANVAS_SCALE)
+    image = QImage(side, side, QImage.Format_RGB32)
+    image.fill(QColor('white'))
+    painter = QPainter(image)
+    painter.setRenderHint(QPainter.Antialiasing)
+    painter.setFont(QFont('Sans', 7))
+    line_height = painter.fontMetrics().height()
+
+    def px(p):
+        return QPointF(p[0] * CANVAS_SCALE, (CANVAS_M - p[1]) * CANVAS_SCALE)
+
+    for strokes, path, label, passed in drawings:
+        painter.setPen(QPen(QColor(200, 200, 200), 5))
+        for stroke in strokes:
+            for a, b in zip(stroke, stroke[1:]):
+                painter.drawLine(px(a), px(b))
+        colour = QColor(27, 120, 55) if passed else QColor(178, 24, 43)
+        on, off = QPen(colour, 1.5), QPen(colour, 1, Qt.DotLine)
+        for a, b in zip(path, path[1:]):
+            middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+            painter.setPen(on if distance_to_lines(middle, strokes) <= tolerance else off)
+            painter.drawLine(px(a), px(b))
+        left = min(v[0] for s in strokes for v in s)
+        top = max(v[1] for s in strokes for v in s)
+        painter.setPen(QColor('black'))
+        corner = px((left, top))
+        lines = label.split('\n')
+        for i, line in enumerate(lines):
+            painter.drawText(QPointF(corner.x(), corner.y() - 6 - (len(lines) - 1 - i) * line_height),
+                             line)
+    painter.end()
+    image.save(path_png, 'PNG')

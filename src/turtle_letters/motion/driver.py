@@ -1,0 +1,243 @@
+"""The turtle's ROS plumbing: its pose stream, its cmd_vel, its pen, its
+spawn and kill, and the canvas. The stop on shutdown lives here, so nothing
+that moves the turtle can leave it coasting."""
+import queue
+import threading
+import time
+
+import rosgraph
+import rosgraph.names
+import rospy
+from geometry_msgs.msg import Twist
+from std_srvs.srv import Empty
+from turtlesim.msg import Pose
+from turtlesim.srv import Kill, SetPen, Spawn
+
+
+
+POSE_TIMEOUT = 1.0      # s without a pose: the simulator is gone
+POSES_KEPT = 1000       # 16 s of ticks: the drawing thread reads far faster
+# A command is sent when it changes, and repeated while it holds so that
+# turtlesim (which stops a turtle after 1 s without one) keeps going. One
+# command per tick from 30 turtles was most of the simulator's work.
+REPEAT_PERIOD = 0.25    # s
+
+
+def beside(turtle, name):
+    """`name` in the namespace that holds the turtle's name: turtlesim keeps
+    its services (spawn, kill, clear) there (/spawn for turtle1 or /alice)."""
+    return rosgraph.names.ns_join(rosgraph.names.namespace(rospy.resolve_name(turtle)), name)
+
+
+class DrawingAborted(RuntimeError):
+    pass
+
+
+class NoPoses(DrawingAborted):
+    """turtlesim publishes the turtle's poses, but none reach us."""
+
+
+class PoseStream:
+    """A turtle's poses, as turtlesim publishes them (one a tick): the latest,
+    and the ones the drawing thread has not read yet."""
+
+    def __init__(self, topic, published):
+        self.topic = topic
+        self.latest = None
+        self._published = published     # () -> whether turtlesim publishes the topic
+        self._queue = queue.Queue(maxsize=POSES_KEPT)
+        self._subscriber = None
+
+    def listen(self):
+        """Subscribe. Once the turtle exists, if we spawn it: then the master
+        hands us turtlesim's publisher at once, instead of calling this machine
+        back later (which a machine the master cannot reach would never hear)."""
+        if self._subscriber is None:
+            self._subscriber = rospy.Subscriber(self.topic, Pose, self._on_pose,
+                                                queue_size=100, tcp_nodelay=True)
+
+    def _on_pose(self, msg):
+        self.latest = msg
+        if self._queue.full():          # idle: nobody reads; keep only the newest
+            self._queue.get_nowait()
+        self._queue.put_nowait(msg)
+
+    def wait(self, say=True, patience=None):
+        """The latest pose, once there is one; says once that it waits (if
+        `say`, and none came within a second). After `patience` s, if
+        turtlesim publishes the poses but none reach us, raises NoPoses."""
+        started = time.monotonic()
+        said = not say
+        while self.latest is None and not rospy.is_shutdown():
+            waited = time.monotonic() - started
+            if not said and waited >= 1.0:
+                rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when '
+                              'it comes', self.topic)
+                said = True
+            if patience is not None and waited >= patience and self._published():
+                raise NoPoses(patience)
+            try:
+                self._queue.get(timeout=0.5)
+            except queue.Empty:
+                pass
+        if self.latest is None:
+            raise DrawingAborted('shutting down')
+        return self.latest
+
+    def next(self):
+        """The next pose: the next tick."""
+        try:
+            pose = self._queue.get(timeout=POSE_TIMEOUT)
+        except queue.Empty:
+            raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s: turtlesim has '
+                                 'stopped, or the network to its machine is down') from None
+        if rospy.is_shutdown():
+            raise DrawingAborted('shutting down')
+        return pose
+
+    def drop_stale(self):
+        """Poses from before now would count ticks that are not ours."""
+        while not self._queue.empty():
+            self._queue.get_nowait()
+
+    def forget(self):
+        """A new turtle of the same name: nothing of the old one counts."""
+        self.latest = None
+        self.drop_stale()
+
+    def connected(self):
+        return self._subscriber is not None and self._subscriber.get_num_connections() > 0
+
+    def close(self):
+        if self._subscriber is not None:
+            self._subscriber.unregister()
+
+
+class TurtleDriver:
+    """Subscribes `TURTLE/pose` (its `poses`); publishes `TURTLE/cmd_vel`; calls
+    `TURTLE/set_pen`, and `spawn`, `kill` and `clear` beside the turtle.
+    TURTLE is a name like turtle1 (relative to the node's namespace) or /alice."""
+
+    def __init__(self, turtle='turtle1'):
+        self.turtle = turtle
+        self.name = rospy.resolve_name(turtle).rsplit('/', 1)[1]    # turtlesim's name for it
+        self.commanded = (0.0, 0.0, 0.0)       # the last command sent
+        self._sent_at = 0.0
+        self._publish_lock = threading.Lock()
+        self._stopping = False                 # once set, only the stop goes out
+        self._cmd_vel = rospy.Publisher(f'{turtle}/cmd_vel', Twist, queue_size=10)
+        self._set_pen = rospy.ServiceProxy(f'{turtle}/set_pen', SetPen)
+        self._clear = rospy.ServiceProxy(beside(turtle, 'clear'), Empty)
+        self._spawn = rospy.ServiceProxy(beside(turtle, 'spawn'), Spawn)
+        self._kill = rospy.ServiceProxy(beside(turtle, 'kill'), Kill)
+        self.poses = PoseStream(rospy.resolve_name(f'{turtle}/pose'), self.exists)
+        rospy.on_shutdown(self._on_shutdown)
+
+    @property
+    def cmd_vel_topic(self):
+        return self._cmd_vel.resolved_name
+
+    def cmd_vel_connections(self):
+        return self._cmd_vel.get_num_connections()
+
+    def publish(self, command, repeat=False):
+        """Send `command` (linear x, linear y, angular z) if it differs from
+        the last one, or the last one went out REPEAT_PERIOD ago, or `repeat`."""
+        command = tuple(command)
+        now = time.monotonic()
+        if command == self.commanded and now - self._sent_at < REPEAT_PERIOD and not repeat:
+            return
+        twist = Twist()
+        twist.linear.x, twist.linear.y, twist.angular.z = command
+        with self._publish_lock:
+            if not self._stopping:
+                self._cmd_vel.publish(twist)
+                self.commanded, self._sent_at = command, now
+
+    def stop(self):
+        """Stop the turtle now rather than let it coast for turtlesim's 1 s timeout."""
+        try:
+            self.publish((0.0, 0.0, 0.0), repeat=True)
+        except rospy.ROSException:
+            pass    # already shut down: the shutdown hook sent the stop
+
+    def exists(self, wait=0.0):
+        """Whether turtlesim has this turtle (its pose topic is published),
+        looking again for up to `wait` s."""
+        master = rosgraph.Master(rospy.get_name())
+        deadline = time.monotonic() + wait
+        while True:
+            if any(name == self.poses.topic for name, _ in master.getPublishedTopics('')):
+                return True
+            if time.monotonic() >= deadline or rospy.is_shutdown():
+                return False
+            time.sleep(0.05)
+
+    def wait_for_simulator(self):
+        """Wait for turtlesim's spawn service; whether we had to (and said so)."""
+        spawn = self._spawn.resolved_name
+        try:
+            rospy.wait_for_service(spawn, timeout=2.0)
+            return False
+        except rospy.ROSException:
+            rospy.loginfo('Waiting for turtlesim: no %s service yet; drawings start when it comes',
+                          spawn)
+            rospy.wait_for_service(spawn)
+            return True
+
+    def spawn(self, x, y, theta=0.0):
+        """Spawn the turtle; raises rospy.ServiceException if turtlesim refuses."""
+        self._spawn(x, y, theta, self.name)
+
+    def kill(self, name=None):
+        """Kill our turtle, or the turtle `name` of the same turtlesim."""
+        self._kill(name or self.name)
+
+    def wait_connected(self, timeout):
+        """Whether turtlesim hears our cmd_vel and we hear its poses within
+        `timeout` s (a new turtle's topics take a moment to connect)."""
+        deadline = time.monotonic() + timeout
+        while not rospy.is_shutdown() and time.monotonic() < deadline:
+            if self._cmd_vel.get_num_connections() and self.poses.connected():
+                return True
+            time.sleep(0.02)
+        return False
+
+    def close(self):
+        """Let go of the turtle's topics (a spare turtle, once killed)."""
+        with self._publish_lock:
+            self._stopping = True
+        self._cmd_vel.unregister()
+        self.poses.close()
+
+    def set_pen(self, pen, down):
+        """Lowering the pen sets its colour and width too (turtlesim's set_pen)."""
+        self._set_pen(*pen, 0 if down else 1)
+
+    def clear(self):
+        self._clear()
+
+    def _on_shutdown(self):
+        """The last word on cmd_vel is a stop, even with a drawing under way."""
+        with self._publish_lock:
+            if self._stopping:          # closed
+                return
+            self._stopping = True
+            self._cmd_vel.publish(Twist())
+        # The publisher's queue thread sends it; give it a moment before
+        # rospy closes the topic (the turtle is at most one tick away).
+        time.sleep(0.1)
+
+
+def call_briefly(call, timeout=2.0):
+    """A service call that must not hold up a shutdown: at most `timeout` s."""
+    thread = threading.Thread(target=lambda: _quietly(call), daemon=True)
+    thread.start()
+    thread.join(timeout)
+
+
+def _quietly(call):
+    try:
+        call()
+    except Exception:   # the turtle or turtlesim is gone already: nothing to undo
+        pass
