@@ -117,7 +117,7 @@ def _place(value, font=None):
     return float(value)
 
 
-def _positive(value, font=None):
+def positive(value, font=None):
     if isinstance(value, bool) or not isinstance(value, (int, float)) \
             or not math.isfinite(value) or value <= 0:
         raise ValueError('a number > 0')
@@ -125,7 +125,7 @@ def _positive(value, font=None):
 
 
 def _size(value, font):
-    size = _positive(value)
+    size = positive(value)
     if size > largest_size(font):
         raise ValueError(f'up to {largest_size(font):.2f}, the largest letter that fits the canvas')
     return size
@@ -180,9 +180,9 @@ PARAMETERS = (
               "timed mode's clock: sim (the simulator's ticks: exact) or wall (the lab's "
               "rospy.Time.now(): short when the machine is busy)", _one_of(*CLOCKS)),
     Parameter('linear_speed', 'float', '1.0', 'm/s', 'driving speed (feedback: the cap)',
-              _positive),
+              positive),
     Parameter('angular_speed', 'float', '0.25', 'rad/s', 'turning speed (feedback: the cap)',
-              _positive),
+              positive),
     Parameter('turn_direction', 'str', 'ccw', '',
               "ccw: always counter-clockwise, as the lab; shortest: the shorter way",
               _one_of(*TURN_DIRECTIONS)),
@@ -219,11 +219,12 @@ def launch_value(text, type_):
     return text
 
 
-def read_parameter(name, get, font=BUILTIN):
-    """One parameter of the table, read with `get(name, default)` and checked
-    (against `font`, for the characters and sizes it has); a bad value raises
-    ParameterError saying what was given and what is allowed."""
-    p = TABLE[name]
+def read_parameter(name, get, font=BUILTIN, table=None):
+    """One parameter of `table` (by default the controller's), read with
+    `get(name, default)` and checked (against `font`, for the characters and
+    sizes it has); a bad value raises ParameterError saying what was given
+    and what is allowed."""
+    p = (table or TABLE)[name]
     value = get('~' + name, launch_value(p.default, p.type))
     try:
         return p.check(value, font)
@@ -243,6 +244,9 @@ class Settings:
         if (self.x is None) != (self.y is None):
             raise ParameterError(f'~x is {self.x!r} and ~y is {self.y!r}; '
                                  'allowed: both numbers, or both "" for a free place')
+        if self.text and self.svg:
+            raise ParameterError(f'~text is {self.text!r} and ~svg is {self.svg!r}; '
+                                 'allowed: one of them, or neither')
 
 
 def _integer(value):

@@ -21,11 +21,27 @@ from turtlesim.msg import Pose
 
 from ..classroom.liveness import answers
 from ..letters.geometry import PlannedPose
-from ..settings import ParameterError, Settings
+from ..settings import Parameter, ParameterError, Settings, positive, read_parameter
+from .files import report_stem
 from .procstat import cpu_seconds
 from .scoring import SETTLE, DrawingWatch, Tolerances, ideal_letter, score
 
 NEVER_MOVED = 60.0      # s without a move before the grader says so, once
+
+# The grader's and the scoreboard's own parameters (the grader also reads
+# the controller's, settings.PARAMETERS, to know what is drawn).
+GRADING = {p.name: p for p in (
+    Parameter('tolerance', 'float', '0.02', 'm', 'how far a vertex may be from the ideal one',
+              positive),
+    Parameter('settle', 'float', str(SETTLE), 's', 'standing still this long ends a drawing',
+              positive),
+    Parameter('timeout', 'float', '300.0', 's', 'a drawing not ended by then fails', positive),
+)}
+
+
+def read_grading(name):
+    """One of GRADING, read and checked; raises ParameterError."""
+    return read_parameter(name, rospy.get_param, table=GRADING)
 
 
 class ControllerUse:
@@ -158,8 +174,8 @@ class Saver:
 
     def __call__(self, report, strokes, path):
         from .picture import draw  # Qt: only once there is something to draw
-        stem = os.path.join(self.folder, f"{report['turtle'].strip('/').replace('/', '_')}-"
-                            f"{report['letter']}-{report['number']}")
+        stem = os.path.join(self.folder, report_stem(report['turtle'], report['letter'],
+                                                     report['number']))
         with open(stem + '.json', 'w') as f:
             json.dump(dict(report, path=path, ideal=strokes), f, indent=1)
         half_box = min(0.1, max(0.01, 1.5 * report['worst_vertex_mm'] / 1000))
@@ -172,8 +188,9 @@ def main():
     rospy.init_node('grader')
     try:
         settings = Settings(rospy.get_param)
-        tolerances = Tolerances(float(rospy.get_param('~tolerance', 0.02)))
-    except (ParameterError, ValueError) as e:
+        tolerances = Tolerances(read_grading('tolerance'))
+        settle, timeout = read_grading('settle'), read_grading('timeout')
+    except ParameterError as e:
         rospy.logfatal('%s: %s', rospy.get_name(), e)
         sys.exit(2)
     folder = os.path.expanduser(rospy.get_param('~out', '~/.ros/turtle_letters_grades'))
@@ -189,8 +206,7 @@ def main():
     def ideal(start):
         return settings.letter, ideal_letter(settings.letter, settings.size, settings.font, start)
     grader = TurtleGrader(settings.turtle, ideal, tolerances, tell,
-                          settle=float(rospy.get_param('~settle', SETTLE)),
-                          timeout=float(rospy.get_param('~timeout', 300.0)))
+                          settle=settle, timeout=timeout)
     rospy.loginfo('Grading %s: %r at %g m in font %s, vertices within %.0f mm; waiting for it '
                   'to move', grader.turtle, settings.letter, settings.size, settings.font.name,
                   tolerances.vertex * 1000)

@@ -14,7 +14,7 @@ from std_msgs.msg import String
 
 from ..classroom.claims import PARTS, stored_parts
 from ..settings import ParameterError, Settings
-from .grader import Saver, TurtleGrader
+from .grader import Saver, TurtleGrader, read_grading
 from .scoring import Tolerances, ideal_text
 
 LOOK_PERIOD = 2.0           # s between looks for new students' turtles
@@ -47,6 +47,9 @@ class Scoreboard:
                 return 'its controller recorded no text in its part', None
             try:
                 params = rospy.get_param(claim['node'], {})
+                # ~svg names a file on the student's machine, not this one,
+                # and a picture is not graded: a letter's settings suffice
+                params.pop('svg', None)
                 settings = Settings(lambda key, default: params.get(key[1:], default))
             except (KeyError, ParameterError) as e:
                 return f"{claim.get('node')}'s parameters: {e}", None
@@ -97,7 +100,11 @@ def score_label(name, report):
 
 def main():
     rospy.init_node('scoreboard')
-    tolerances = Tolerances(float(rospy.get_param('~tolerance', 0.02)))
+    try:
+        tolerances = Tolerances(read_grading('tolerance'))
+    except ParameterError as e:
+        rospy.logfatal('%s: %s', rospy.get_name(), e)
+        raise SystemExit(2)
     folder = os.path.expanduser(rospy.get_param('~out', '~/.ros/turtle_letters_grades'))
     Scoreboard(tolerances, folder)
     rospy.loginfo('Scoreboard: grading every student turtle with a part of the canvas, vertices '
