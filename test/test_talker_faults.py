@@ -11,6 +11,7 @@ import rospy
 import rostest
 from std_msgs.msg import String
 
+from support.children import readable_env
 from support.nodes import LogWatch, NodeProcess, node_pid, wait_until
 from turtle_letters.grading.procstat import cpu_seconds
 from support.terminal import Terminal
@@ -134,7 +135,7 @@ class TalkerFaults(unittest.TestCase):
         talker.stop(signal.SIGKILL)
         talker.process = subprocess.Popen(
             ['bash', '-c', 'exec rosrun turtle_letters talker.py <&-'],
-            stdout=open(talker.out_path, 'w'), stderr=subprocess.STDOUT)
+            stdout=open(talker.out_path, 'w'), stderr=subprocess.STDOUT, env=readable_env())
         self.logs.wait_for('No standard input', 15, TALKER, explain=talker.output)
         self.assert_idles_then_ends_cleanly(talker, node_pid(TALKER), signal.SIGTERM)
 

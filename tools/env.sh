@@ -9,6 +9,10 @@ ROS_PYTHON=/usr/bin/python3     # ROS 1 runs on the system Python 3 only
 # configure the workspace all over again.
 CATKIN_ARGS=(-DPYTHON_EXECUTABLE="$ROS_PYTHON" -DCATKIN_ENABLE_TESTING=ON -DCMAKE_BUILD_TYPE=Release)
 
+# Nodes' and roslaunch's lines as they come, even into a pipe (make run |
+# tee log): Python block-buffers output that does not go to a terminal.
+export PYTHONUNBUFFERED=1
+
 # A pyenv/conda/venv python3 first on PATH has no rospy; tools that say
 # `env python3` (rostest's hztest, for one) must find the system one.
 export PATH="/usr/bin:/bin:$PATH"

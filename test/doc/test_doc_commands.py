@@ -13,6 +13,8 @@ import time
 
 import pytest
 
+from support.children import readable_env
+
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..'))
 PAGES = ['README.md'] + sorted(os.path.relpath(p, REPO) for p in glob.glob(f'{REPO}/doc/*.md'))
 # Run elsewhere, and where.
@@ -90,8 +92,8 @@ def master_port():
 
 
 def environment(port):
-    env = dict(os.environ, ROS_MASTER_URI=f'http://127.0.0.1:{port}', ROS_IP='127.0.0.1',
-               ROS_HOME=tempfile.mkdtemp(prefix='doc_commands_'))
+    env = readable_env(ROS_MASTER_URI=f'http://127.0.0.1:{port}', ROS_IP='127.0.0.1',
+                       ROS_HOME=tempfile.mkdtemp(prefix='doc_commands_'))
     env.pop('DISPLAY', None)        # headless, as in CI
     return env
 

@@ -19,6 +19,8 @@ import time
 
 import pytest
 
+from support.children import readable_env
+
 SUBNET = '198.51.100'
 
 
@@ -89,7 +91,8 @@ class Host:
         self.name = name
         self.home = os.path.join(home, name)
         os.makedirs(self.home)
-        self.env = {k: v for k, v in os.environ.items() if k not in ('ROS_IP', 'ROS_HOSTNAME')}
+        self.env = readable_env({k: v for k, v in os.environ.items()
+                                 if k not in ('ROS_IP', 'ROS_HOSTNAME')})
         self.env.update(ROS_MASTER_URI='http://master:11311', ROS_HOSTNAME=name,
                         ROS_HOME=self.home, QT_QPA_PLATFORM='offscreen')
         self.env.pop('DISPLAY', None)

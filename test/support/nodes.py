@@ -15,6 +15,8 @@ from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Log
 from turtlesim.msg import Pose
 
+from support.children import readable_env
+
 
 def wait_until(condition, timeout, what, explain=None):
     """Poll `condition` until it is true; after `timeout` s fail, saying
@@ -61,7 +63,7 @@ class NodeProcess:
         with open(self.out_path, 'w') as out:
             self.process = subprocess.Popen(['rosrun', *command], stdin=stdin, stdout=out,
                                             stderr=subprocess.STDOUT,
-                                            env=dict(os.environ, **env))
+                                            env=readable_env(**env))
 
     @property
     def pid(self):
@@ -104,7 +106,7 @@ class Processes:
     def start(self, name, *command, **env):
         log = open(os.path.join(self.log_dir, f'{name}.log'), 'w')
         process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT,
-                                   stdin=subprocess.DEVNULL, env=dict(os.environ, **env))
+                                   stdin=subprocess.DEVNULL, env=readable_env(**env))
         self.running.append(process)
         return process
 

@@ -1,0 +1,54 @@
+"""package.xml names every package the code needs at run time, so that
+rosdep installs it before a user meets a refusal."""
+import ast
+import importlib.util
+import os
+import xml.etree.ElementTree as ElementTree
+
+HERE = os.path.dirname(__file__)
+PACKAGE = os.path.join(HERE, '..', '..')
+SRC = os.path.join(PACKAGE, 'src', 'turtle_letters')
+# The rosdep key of each package the code imports that is not Python's own.
+KEYS = {'rospy': 'rospy', 'rosgraph': 'rosgraph', 'actionlib': 'actionlib',
+        'geometry_msgs': 'geometry_msgs', 'std_msgs': 'std_msgs', 'std_srvs': 'std_srvs',
+        'turtlesim': 'turtlesim', 'actionlib_msgs': 'actionlib_msgs', 'yaml': 'python3-yaml',
+        'tqdm': 'python3-tqdm', 'PyQt5': 'python3-pyqt5', 'svgelements': 'python3-svgelements'}
+
+
+def run_dependencies():
+    root = ElementTree.parse(os.path.join(PACKAGE, 'package.xml')).getroot()
+    return {e.text for e in root if e.tag in ('depend', 'exec_depend')}
+
+
+def imported_packages():
+    """The top-level packages that the code imports, other than Python's own."""
+    found = set()
+    for folder, _, files in os.walk(SRC):
+        for name in (f for f in files if f.endswith('.py')):
+            with open(os.path.join(folder, name)) as f:
+                tree = ast.parse(f.read())
+            for node in ast.walk(tree):
+                if isinstance(node, ast.Import):
+                    found.update(a.name.split('.')[0] for a in node.names)
+                elif isinstance(node, ast.ImportFrom) and node.level == 0:
+                    found.add(node.module.split('.')[0])
+    return {name for name in found if not standard(name)}
+
+
+def standard(name):
+    """Python's own module (3.8 has no sys.stdlib_module_names): not from site- or dist-packages."""
+    spec = importlib.util.find_spec(name)
+    return spec is not None and 'packages' not in (spec.origin or '')
+
+
+def test_every_imported_package_is_a_run_dependency():
+    imported = imported_packages()
+    assert imported <= set(KEYS), f'imported, with no rosdep key here: {imported - set(KEYS)}'
+    missing = {KEYS[name] for name in imported} - run_dependencies()
+    assert not missing, f'package.xml lacks {missing}'
+
+
+def test_the_hershey_fonts_files_are_a_run_dependency():
+    with open(os.path.join(SRC, 'letters', 'hershey.py')) as f:
+        assert '/usr/share/hershey-fonts' in f.read()
+    assert 'hershey-fonts-data' in run_dependencies()
