@@ -168,6 +168,29 @@ class Faults(unittest.TestCase):
         self.assert_at_n_end()
         self.assert_no_traceback(ctl)
 
+    def test_3b_a_spawned_turtle_gone_and_a_trigger_before_the_simulator_is_back(self):
+        """The student's turtle is gone with its simulator; P fails (nothing
+        to respawn it on) and says so; once turtlesim is back, P respawns
+        the turtle and draws. (It used to wait forever for the pose.)"""
+        sim = simulator()
+        ctl = self.start(controller('_turtle:=alice', *FAST))
+        self.wait_for_node(CONTROLLER)
+        rospy.wait_for_message('/alice/pose', Pose, timeout=30)
+        self.wait_for_chatter_subscriber(with_poses=False)
+        sim.stop(signal.SIGINT)             # a clean exit: its topics and services go
+        self.chatter.publish(String('P'))
+        self.logs.wait_for("Drawing of 'N' stopped", 20, CONTROLLER, explain=ctl.output)
+
+        self.start(simulator())
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        alice = PoseRecorder(turtle='alice')
+        self.addCleanup(alice.unregister)
+        t0 = time.time()
+        self.chatter.publish(String('P'))
+        self.logs.wait_for("Done drawing 'N'", 60, CONTROLLER, explain=ctl.output)
+        self.assertTrue(alice.moving_since(t0), 'alice did not draw')
+        self.assert_no_traceback(ctl)
+
     def check_stops_at_once(self, sig):
         self.start(simulator())
         ctl = controller()

@@ -13,7 +13,7 @@ from std_msgs.msg import String
 
 from .actions.jobs import TYPED_AHEAD, Jobs, chatter_request, text_request
 from .actions.server import DrawServer, describe
-from .classroom.diagnosis import POSE_PATIENCE, why_stopped
+from .classroom.diagnosis import why_stopped
 from .classroom.liveness import refuse_a_second
 from .classroom.placement import Placement, Refused
 from .classroom.spares import Spares, draw_in_parallel
@@ -95,7 +95,7 @@ class TurtleController:
     def draw(self, order):
         """Draw a text, or an SVG file, at the next free place on the canvas (or our part)."""
         self.placement.respawn_if_gone()
-        pose = self.driver.poses.wait(patience=POSE_PATIENCE)
+        pose = self.driver.poses.wait(cancelled=lambda: order.control.cancelled)
         start = PlannedPose(pose.x, pose.y, pose.theta)
         job = plan_request(order.request, self.sheet, start, self.settings)
         self.placement.note_cursor(job.chars)

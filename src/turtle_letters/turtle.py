@@ -80,7 +80,7 @@ class Turtle:
                                 now=self.control.clock), description)
 
     def _fresh_pose(self):
-        pose = self.driver.poses.wait()
+        pose = self.driver.poses.wait(cancelled=lambda: self.control.cancelled)
         self.driver.poses.drop_stale()      # they would count ticks that are not ours
         return pose
 

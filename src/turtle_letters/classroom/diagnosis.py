@@ -11,7 +11,6 @@ from .network import advertised_host
 
 STALL_SECONDS = 1.0         # s a turtle may disobey before the drawing stops
 CONNECT_SECONDS = 5.0       # s a turtle's topics may take to connect
-POSE_PATIENCE = 3.0         # s without a pose that turtlesim publishes: we cannot hear it
 
 
 def reach_advice():

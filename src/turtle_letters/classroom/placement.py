@@ -62,10 +62,11 @@ class Placement:
         self.placed.set()
 
     def respawn_if_gone(self):
-        """turtlesim came back without our turtle: it starts again at its part's first place."""
+        """turtlesim came back without our turtle: it starts again at its
+        part's first place. Until a spawn succeeds (raises Refused), the
+        turtle is still ours to spawn, at the next trigger."""
         if self.spawned and not self.driver.exists():
             self.driver.poses.forget()
-            self.spawned = False
             self._spawn(self.sheet.part[0])
 
     def note_cursor(self, chars):
@@ -91,7 +92,7 @@ class Placement:
         letter's place is claimed so that no one spawns there."""
         s = self.settings
         self._connect()
-        pose = self.driver.poses.wait(say=say_wait)
+        pose = self.driver.poses.wait(patience=None, say=say_wait)
         if s.x is not None:
             rospy.logwarn('Turtle %s already exists: ~x and ~y are ignored; its first letter '
                           'starts where it stands', self.driver.name)
@@ -121,7 +122,7 @@ class Placement:
         if exists:
             self.spawned = spawned
             self._connect()
-            self.driver.poses.wait()
+            self.driver.poses.wait(patience=None)
         else:
             self._spawn(place)
         self.sheet.give_part(place, letter_bounds(box, s.size, s.font), cursor)

@@ -63,7 +63,7 @@ def draw_in_parallel(turtle, spares, chars):
 
 def draw_one(turtle, char, place):
     """One character at its place, from where the turtle stands."""
-    pose = turtle.driver.poses.wait()
+    pose = turtle.driver.poses.wait(cancelled=lambda: turtle.control.cancelled)
     plan = plan_text(char, [place], PlannedPose(pose.x, pose.y, pose.theta), turtle.settings)
     turtle.pen_down()
     MODES[turtle.settings.mode].carry_out(plan, turtle, lambda drawn, ink: None)

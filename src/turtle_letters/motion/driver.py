@@ -1,7 +1,7 @@
 """The turtle's ROS plumbing: its pose stream, its cmd_vel, its pen, its
 spawn and kill, and the canvas. The stop on shutdown lives here, so nothing
 that moves the turtle can leave it coasting."""
-import queue
+import collections
 import threading
 import time
 
@@ -13,9 +13,12 @@ from std_srvs.srv import Empty
 from turtlesim.msg import Pose
 from turtlesim.srv import Kill, SetPen, Spawn
 
+from .control import Cancelled
+
 
 
 POSE_TIMEOUT = 1.0      # s without a pose: the simulator is gone
+POSE_PATIENCE = 3.0     # s a drawing waits for its turtle's first pose
 POSES_KEPT = 1000       # 16 s of ticks: the drawing thread reads far faster
 # A command is sent when it changes, and repeated while it holds so that
 # turtlesim (which stops a turtle after 1 s without one) keeps going. One
@@ -45,7 +48,11 @@ class PoseStream:
         self.topic = topic
         self.latest = None
         self._published = published     # () -> whether turtlesim publishes the topic
-        self._queue = queue.Queue(maxsize=POSES_KEPT)
+        # Not yet read; the oldest go when it is full (idle: nobody reads).
+        # One lock for the callback and the drawing thread: no check of one
+        # can be overtaken by the other.
+        self._unread = collections.deque(maxlen=POSES_KEPT)
+        self._arrived = threading.Condition()
         self._subscriber = None
 
     def listen(self):
@@ -57,48 +64,57 @@ class PoseStream:
                                                 queue_size=100, tcp_nodelay=True)
 
     def _on_pose(self, msg):
-        self.latest = msg
-        if self._queue.full():          # idle: nobody reads; keep only the newest
-            self._queue.get_nowait()
-        self._queue.put_nowait(msg)
+        with self._arrived:
+            self.latest = msg
+            self._unread.append(msg)
+            self._arrived.notify_all()
 
-    def wait(self, say=True, patience=None):
+    def _take(self, timeout):
+        """The oldest unread pose, or None if none comes within `timeout` s."""
+        with self._arrived:
+            if not self._arrived.wait_for(lambda: self._unread, timeout):
+                return None
+            return self._unread.popleft()
+
+    def wait(self, patience=POSE_PATIENCE, cancelled=lambda: False, say=True):
         """The latest pose, once there is one; says once that it waits (if
-        `say`, and none came within a second). After `patience` s, if
-        turtlesim publishes the poses but none reach us, raises NoPoses."""
-        started = time.monotonic()
-        said = not say
-        while self.latest is None and not rospy.is_shutdown():
-            waited = time.monotonic() - started
-            if not said and waited >= 1.0:
-                rospy.loginfo('Waiting for turtlesim: no pose on %s yet; the drawing starts when '
-                              'it comes', self.topic)
-                said = True
-            if patience is not None and waited >= patience and self._published():
-                raise NoPoses(patience)
-            try:
-                self._queue.get(timeout=0.5)
-            except queue.Empty:
-                pass
-        if self.latest is None:
-            raise DrawingAborted('shutting down')
+        `say`, and none came within a second). Every wait ends: on shutdown
+        (DrawingAborted), on `cancelled()` (control.Cancelled), or after
+        `patience` s (None: at start only, where Ctrl-C ends it): NoPoses if
+        turtlesim publishes the poses but none reach us, else DrawingAborted."""
+        deadline = None if patience is None else time.monotonic() + patience
+        said_at = time.monotonic() + 1.0 if say else None
+        while self.latest is None:
+            if rospy.is_shutdown():
+                raise DrawingAborted('shutting down')
+            if cancelled():
+                raise Cancelled('cancelled while waiting for its turtle')
+            now = time.monotonic()
+            if said_at is not None and now >= said_at:
+                rospy.loginfo('Waiting for turtlesim: no pose on %s yet', self.topic)
+                said_at = None
+            if deadline is not None and now >= deadline:
+                if self._published():
+                    raise NoPoses(patience)
+                raise DrawingAborted(f'no pose on {self.topic} in {patience:g} s, and turtlesim '
+                                     'publishes none: the turtle is gone, or turtlesim with it')
+            self._take(0.25)
         return self.latest
 
     def next(self):
         """The next pose: the next tick."""
-        try:
-            pose = self._queue.get(timeout=POSE_TIMEOUT)
-        except queue.Empty:
+        pose = self._take(POSE_TIMEOUT)
+        if pose is None:
             raise DrawingAborted(f'no pose from turtlesim for {POSE_TIMEOUT:g} s: turtlesim has '
-                                 'stopped, or the network to its machine is down') from None
+                                 'stopped, or the network to its machine is down')
         if rospy.is_shutdown():
             raise DrawingAborted('shutting down')
         return pose
 
     def drop_stale(self):
         """Poses from before now would count ticks that are not ours."""
-        while not self._queue.empty():
-            self._queue.get_nowait()
+        with self._arrived:
+            self._unread.clear()
 
     def forget(self):
         """A new turtle of the same name: nothing of the old one counts."""
