@@ -191,6 +191,25 @@ class Faults(unittest.TestCase):
         self.assertTrue(alice.moving_since(t0), 'alice did not draw')
         self.assert_no_traceback(ctl)
 
+    def test_3c_ctrl_c_while_waiting_for_the_first_pose_ends_quietly(self):
+        """turtlesim is registered but answers nothing (stopped): the
+        controller waits for its turtle's first pose; Ctrl-C then ends it
+        at once, with no traceback."""
+        sim = self.start(simulator())
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        sim.send(signal.SIGSTOP)
+        self.addCleanup(sim.send, signal.SIGCONT)
+        ctl = controller()
+        wait_until(lambda: 'no pose on /turtle1/pose yet' in ctl.output(), 30,
+                   'the controller waiting for its first pose', explain=ctl.output)
+        ctl.send(signal.SIGINT)
+        wait_until(lambda: "before turtle turtle1's first pose" in ctl.output(), 15,
+                   'the controller saying why it ended', explain=ctl.output)
+        # rospy's own threads still wait on the stopped turtlesim: let it go
+        sim.send(signal.SIGCONT)
+        self.assertEqual(ctl.process.wait(15), 0, ctl.output())
+        self.assertNotIn('Traceback', ctl.output())
+
     def check_stops_at_once(self, sig):
         self.start(simulator())
         ctl = controller()

@@ -21,7 +21,7 @@ from .letters.font import shown
 from .letters.geometry import PlannedPose
 from .letters.plan import SvgFile, plan_request
 from .letters.sheet import Sheet
-from .motion.driver import TurtleDriver
+from .motion.driver import DrawingAborted, TurtleDriver
 from .motion.modes import MODES
 from .settings import ParameterError, Settings, quote_unreadable
 from .turtle import Turtle, pose_text
@@ -134,6 +134,9 @@ def main():
         rospy.logfatal('%s: %s', rospy.get_name(), e)
         raise SystemExit(2)
     except rospy.ROSInterruptException:
+        return
+    except DrawingAborted:          # Ctrl-C while waiting for the turtle's first pose
+        rospy.loginfo("Shut down before turtle %s's first pose came", settings.turtle)
         return
     rospy.loginfo('Ready: publish %r on %s to draw %r with turtle %s (%s mode)', settings.trigger,
                   rospy.resolve_name('chatter'), settings.letter, controller.driver.name,
