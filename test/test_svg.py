@@ -43,7 +43,7 @@ class SvgLineArt(unittest.TestCase):
         pub.publish(String(path))
 
         start = PlannedPose(first.x, first.y, first.theta)
-        picture = svgart.picture(svgart.read(path), settings.size)
+        picture = svgart.picture(svgart.read(path, settings.svg_dirs), settings.size)
         place, _ = Sheet(settings.size, settings.font).reserve_picture(
             picture.width / settings.size, 'flower', start)
         cls.plan = plan_picture(picture, place, start, settings)

@@ -182,7 +182,7 @@ def svg_run(processes, recorder, size=3.0, speed=1.0):
     settings = smooth_settings('builtin', size, speed)
     commands, poses = smooth_run(processes, recorder, settings, '/svg', SVG)
     start = PlannedPose(5.544445, 5.544445, 0.0)
-    picture = svgart.picture(svgart.read(SVG), size)
+    picture = svgart.picture(svgart.read(SVG, [os.path.dirname(SVG)]), size)
     place, _ = Sheet(size, settings.font).reserve_picture(picture.width / size, 'flower', start)
     return measure(plan_picture(picture, place, start, settings), commands, poses, speed)
 

@@ -13,6 +13,7 @@ from .letters.font import BUILTIN
 from .letters.geometry import TURN_DIRECTIONS
 from .letters.hershey import FontError, load_font
 from .letters.layout import MARGIN, WORLD_SIZE, largest_size
+from .letters.svgart import allowed
 from .motion.executors import CLOCKS
 from .motion.modes import MODES
 
@@ -107,6 +108,23 @@ def _svg(value, font=None):
     return value
 
 
+# The package's own pictures (in the source or devel space; an install has none).
+PACKAGE_DOC = os.path.realpath(os.path.join(os.path.dirname(os.path.realpath(__file__)), '..', '..',
+                                            'doc'))
+
+
+def _folders(value, font=None):
+    """'' (the package's doc/ and the folder roslaunch was started in: nodes
+    inherit its PWD), or folders separated by ':'; as real paths."""
+    if value == '':
+        return tuple(os.path.realpath(f) for f in (PACKAGE_DOC, os.environ.get('PWD', ''))
+                     if f and os.path.isdir(f))
+    folders = value.split(':') if isinstance(value, str) else []
+    if not folders or not all(os.path.isabs(f) and os.path.isdir(f) for f in folders):
+        raise ValueError('"" or absolute paths of folders that exist, separated by ":"')
+    return tuple(os.path.realpath(f) for f in folders)
+
+
 def _place(value, font=None):
     if value == '':
         return None
@@ -198,6 +216,9 @@ PARAMETERS = (
     Parameter('y', 'float', '', 'm', 'where a spawned turtle starts; "": a free place', _place),
     Parameter('parallel', 'bool', 'false', '',
               'a word is drawn by one turtle per character, all at once', _boolean),
+    Parameter('svg_dirs', 'str', '', '',
+              'the folders whose SVG files may be drawn, separated by ":"; "": the '
+              "package's doc/ and the folder roslaunch was started in", _folders),
     Parameter('svg', 'str', '', '', 'an SVG file whose line art is drawn once at start', _svg),
 )
 
@@ -244,6 +265,9 @@ class Settings:
         if (self.x is None) != (self.y is None):
             raise ParameterError(f'~x is {self.x!r} and ~y is {self.y!r}; '
                                  'allowed: both numbers, or both "" for a free place')
+        if self.svg and not allowed(self.svg, self.svg_dirs):
+            raise ParameterError(f'~svg is {self.svg!r}; allowed: a file under the folders of '
+                                 f'~svg_dirs, {":".join(self.svg_dirs)}')
         if self.text and self.svg:
             raise ParameterError(f'~text is {self.text!r} and ~svg is {self.svg!r}; '
                                  'allowed: one of them, or neither')

@@ -50,7 +50,7 @@ def plan_request(request, sheet, start, settings) -> Planned:
     """A text's or a picture's plan, at the next free place on `sheet`;
     raises layout.DoesNotFit or svgart.SvgError (then nothing is reserved)."""
     if isinstance(request, SvgFile):
-        picture = svgart.picture(svgart.read(request.path), settings.size)
+        picture = svgart.picture(svgart.read(request.path, settings.svg_dirs), settings.size)
         name = shown(request.path.rsplit('/', 1)[-1])
         place, must_clear = sheet.reserve_picture(picture.width / settings.size, name, start)
         note = (f'{name}: {picture.texts} text element(s) not drawn (text in an SVG is not '

@@ -8,12 +8,15 @@ meters high (its aspect kept), its lower left corner at (0, 0), y up.
 """
 import math
 import os
+from xml.etree import ElementTree
 from typing import List, NamedTuple, Optional, Tuple
 
+from .font import shown
 from .geometry import distance_to_segment
 
 TOLERANCE = 0.001       # m on the canvas: how far a flattened curve may be from the true one
 MAX_POINTS = 20000      # points in all: more would take the turtle hours
+MAX_BYTES = 5000000     # a larger file is refused unread: line art is smaller
 MAX_STEPS = 4096        # chords of one curve at most
 
 Point = Tuple[float, float]
@@ -37,21 +40,31 @@ class Picture(NamedTuple):
     texts: int
 
 
-def read(path: str) -> Shapes:
-    """The shapes of the SVG file at `path`; raises SvgError."""
+def read(path: str, folders) -> Shapes:
+    """The shapes of the SVG file at `path`; raises SvgError. Only a file
+    under one of `folders` (absolute, real paths) is read: any other path is
+    refused in the same words whether it exists or not, since a request may
+    come from any node."""
     try:
         import svgelements
     except ImportError:
         raise SvgError('python3-svgelements is not installed: run make deps') from None
     if not os.path.isabs(path):
-        raise SvgError(f'{path}: give the absolute path (this node runs in {os.getcwd()})')
-    if not os.path.isfile(path):
-        raise SvgError(f'{path}: no such file')
+        raise SvgError(f'{shown(path)}: give the absolute path (this node runs in {os.getcwd()})')
+    if not allowed(path, folders):
+        raise SvgError(f'{shown(path)}: only files under the folders of ~svg_dirs are read')
+    real = os.path.realpath(path)
+    if not os.path.isfile(real):
+        raise SvgError(f'{shown(path)}: no such file')
+    if os.path.getsize(real) > MAX_BYTES:
+        raise SvgError(f'{shown(path)}: larger than {MAX_BYTES // 1000000} MB')
+    root = _root_element(real)
+    if root != '<svg>':
+        raise SvgError(f'{shown(path)}: not an SVG file (its root: {root})')
     try:
-        svg = svgelements.SVG.parse(path, reify=True)
-        elements = list(svg.elements())
-    except Exception as e:  # a parser meets anything in a file: each is "not an SVG"
-        raise SvgError(f'{path}: not an SVG file that can be read ({type(e).__name__})') from None
+        elements = list(svgelements.SVG.parse(real, reify=True).elements())
+    except (ElementTree.ParseError, ValueError) as e:
+        raise SvgError(f'{shown(path)}: an SVG file that cannot be read: {e}') from None
     paths, colours, texts = [], [], 0
     for element in elements:
         if isinstance(element, svgelements.Text):
@@ -62,6 +75,22 @@ def read(path: str) -> Shapes:
                 paths.append(line)
                 colours.append(_colour(element.stroke))
     return Shapes(paths, colours, texts)
+
+
+def allowed(path: str, folders) -> bool:
+    """Whether `path`, links followed, lies under one of `folders` (real paths)."""
+    real = os.path.realpath(path)
+    return any(os.path.commonpath([real, folder]) == folder for folder in folders)
+
+
+def _root_element(path):
+    """The file's root element as '<name>', or why it has none."""
+    try:
+        for _, element in ElementTree.iterparse(path, events=('start',)):
+            return '<' + element.tag.rsplit('}', 1)[-1] + '>'
+    except ElementTree.ParseError as e:
+        return f'not XML: {e}'
+    return 'empty'
 
 
 def picture(shapes: Shapes, size: float, tolerance: float = TOLERANCE) -> Picture:

@@ -9,12 +9,14 @@ import pytest
 svgelements = pytest.importorskip('svgelements')   # Debian's python3-svgelements (make deps)
 
 from turtle_letters.letters import svgart  # noqa: E402
+from turtle_letters.letters.font import shown  # noqa: E402
 from turtle_letters.motion.modes import MODES  # noqa: E402
 from turtle_letters.letters.plan import plan_picture  # noqa: E402
 from turtle_letters.letters.geometry import PlannedPose  # noqa: E402
 from turtle_letters.settings import Settings  # noqa: E402
 
-FLOWER = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'doc', 'flower.svg')
+DOC = os.path.realpath(os.path.join(os.path.dirname(__file__), '..', '..', '..', 'doc'))
+FLOWER = os.path.join(DOC, 'flower.svg')
 
 
 def write(tmp_path, body, name='art.svg'):
@@ -36,7 +38,7 @@ def distance_to_polyline(q, points):
 
 @pytest.mark.parametrize('tolerance', [0.5, 0.05, 0.005])
 def test_every_curve_stays_within_the_tolerance_of_the_librarys_own_points(tolerance):
-    shapes = svgart.read(os.path.abspath(FLOWER))
+    shapes = svgart.read(os.path.abspath(FLOWER), [DOC])
     for path in shapes.paths:
         polylines = svgart.flatten(path, tolerance)
         for segment in path:
@@ -49,7 +51,7 @@ def test_every_curve_stays_within_the_tolerance_of_the_librarys_own_points(toler
 
 
 def test_a_finer_tolerance_takes_more_points_but_not_wildly_more():
-    path = svgart.read(os.path.abspath(FLOWER)).paths[0]        # the circle, r = 12
+    path = svgart.read(os.path.abspath(FLOWER), [DOC]).paths[0]        # the circle, r = 12
     coarse = sum(len(p) for p in svgart.flatten(path, 0.5))
     fine = sum(len(p) for p in svgart.flatten(path, 0.005))
     assert coarse < fine < 20 * coarse
@@ -58,7 +60,7 @@ def test_a_finer_tolerance_takes_more_points_but_not_wildly_more():
 def test_the_picture_is_scaled_to_its_height_with_its_aspect_and_transforms(tmp_path):
     path = write(tmp_path, '<g transform="translate(10,20) scale(2)">'
                  '<rect x="0" y="0" width="20" height="10" stroke="#ff0000" fill="none"/></g>')
-    picture = svgart.picture(svgart.read(path), 1.0)
+    picture = svgart.picture(svgart.read(path, [str(tmp_path)]), 1.0)
     points = [p for stroke in picture.strokes for p in stroke]
     xs, ys = [p[0] for p in points], [p[1] for p in points]
     assert (min(xs), min(ys)) == pytest.approx((0.0, 0.0))
@@ -69,14 +71,14 @@ def test_the_picture_is_scaled_to_its_height_with_its_aspect_and_transforms(tmp_
 def test_y_points_up_on_the_canvas(tmp_path):
     path = write(tmp_path, '<line x1="0" y1="0" x2="0" y2="10" stroke="black"/>'
                  '<line x1="5" y1="0" x2="10" y2="0"/>')
-    picture = svgart.picture(svgart.read(path), 1.0)
+    picture = svgart.picture(svgart.read(path, [str(tmp_path)]), 1.0)
     assert picture.strokes[0] == [pytest.approx((0.0, 1.0)), pytest.approx((0.0, 0.0))]
     assert picture.colours == [(0, 0, 0), None]     # no stroke: the node's own pen
 
 
 def test_text_is_counted_not_drawn(tmp_path):
     path = write(tmp_path, '<text x="0" y="10">hi</text><circle cx="50" cy="50" r="5"/>')
-    shapes = svgart.read(path)
+    shapes = svgart.read(path, [str(tmp_path)])
     assert (shapes.texts, len(shapes.paths)) == (1, 1)
 
 
@@ -87,7 +89,7 @@ def test_text_is_counted_not_drawn(tmp_path):
 ])
 def test_a_picture_with_nothing_to_draw_is_refused(tmp_path, body, says):
     with pytest.raises(svgart.SvgError, match=says):
-        svgart.picture(svgart.read(write(tmp_path, body)), 1.0)
+        svgart.picture(svgart.read(write(tmp_path, body), [str(tmp_path)]), 1.0)
 
 
 def test_bad_files_are_refused_in_one_line(tmp_path):
@@ -95,9 +97,12 @@ def test_bad_files_are_refused_in_one_line(tmp_path):
     garbage = tmp_path / 'garbage.svg'
     garbage.write_bytes(b'\x89PNG\r\n\x1a\n not xml at all <<<')
     cases[str(garbage)] = 'not an SVG file'
+    html = tmp_path / 'page.svg'
+    html.write_text('<html><body>a page</body></html>')
+    cases[str(html)] = r'not an SVG file \(its root: <html>\)'
     for path, says in cases.items():
         with pytest.raises(svgart.SvgError, match=says) as refused:
-            svgart.picture(svgart.read(path), 1.0)
+            svgart.picture(svgart.read(path, [str(tmp_path)]), 1.0)
         assert '\n' not in str(refused.value)
 
 
@@ -105,7 +110,7 @@ def test_too_many_points_are_refused(tmp_path):
     dots = ''.join(f'<line x1="{i % 100}" y1="{i // 100}" x2="{i % 100}.5" y2="{i // 100}"/>'
                    for i in range(svgart.MAX_POINTS // 2 + 1))
     with pytest.raises(svgart.SvgError, match='more than'):
-        svgart.picture(svgart.read(write(tmp_path, dots)), 1.0)
+        svgart.picture(svgart.read(write(tmp_path, dots), [str(tmp_path)]), 1.0)
 
 
 def test_a_picture_is_drawn_a_colour_at_a_time_with_its_colours():
@@ -128,3 +133,28 @@ def test_a_pen_of_ones_own_overrides_the_files_colours():
     settings = Settings(lambda name, default: {'~pen': '10 20 30 2'}.get(name, default))
     plan = plan_picture(picture, (3.0, 4.0), PlannedPose(3.0, 4.0, 0.0), settings)
     assert plan.colours == [None, None]         # the node's ~pen for every stroke
+
+
+def test_a_file_outside_the_folders_allowed_is_refused_alike_whether_it_exists_or_not(tmp_path):
+    allowed = tmp_path / 'mine'
+    allowed.mkdir()
+    (allowed / 'art.svg').symlink_to(FLOWER)        # a link out of the folder
+    refusals = []
+    for path in ('/etc/passwd', '/etc/no-such-file', FLOWER, str(allowed / 'art.svg'),
+                 str(allowed / '..' / '..' / 'etc' / 'passwd')):
+        with pytest.raises(svgart.SvgError) as refused:
+            svgart.read(path, [str(allowed)])
+        refusals.append(str(refused.value).replace(shown(path), 'PATH'))
+    assert set(refusals) == {'PATH: only files under the folders of ~svg_dirs are read'}
+
+
+def test_a_file_too_large_is_refused_unread(tmp_path):
+    big = tmp_path / 'big.svg'
+    big.write_text('<svg xmlns="http://www.w3.org/2000/svg">' + ' ' * svgart.MAX_BYTES + '</svg>')
+    with pytest.raises(svgart.SvgError, match='larger than 5 MB'):
+        svgart.read(str(big), [str(tmp_path)])
+
+
+def test_the_file_in_a_folder_allowed_is_read(tmp_path):
+    assert svgart.read(write(tmp_path, '<line x1="0" y1="0" x2="9" y2="9"/>'),
+                       [str(tmp_path)]).paths
