@@ -4,6 +4,9 @@ goals answered in one line with nothing moving; the lab's N drawn with a
 3 s pause mid-move (and a goal refused meanwhile), feedback that only
 increases, and the result; a second N cancelled mid-move, the turtle still
 within 0.2 s; the next N drawn at the next place."""
+import os
+import shutil
+import tempfile
 import time
 import unittest
 
@@ -25,6 +28,7 @@ from turtle_letters.letters.sheet import Sheet
 TOLERANCE = 0.002       # m: timed mode on the simulator's clock, paused or not
 PAUSE = 3.0             # s: the issue's pause, mid-move
 STILL_AFTER = 0.2       # s: a cancelled turtle stands by then
+SVG_DIR = '/tmp'         # action.test's svg_dirs
 BAD_GOALS = {'empty': DrawGoal(text=''), 'both': DrawGoal(text='N', svg='/tmp/n.svg'),
              'no glyph': DrawGoal(text='N\u00e9'), 'too long': DrawGoal(text='N' * 12),
              'no file': DrawGoal(svg='/nonexistent/drawing.svg')}
@@ -57,6 +61,7 @@ class DrawAsAnAction(unittest.TestCase):
         cls.moved_for_bad_goals = cls.poses.moving_since(t0)
         cls.paused_n = cls.draw_with_a_pause()
         cls.cancelled = cls.draw_and_cancel()
+        cls.cancelled_planning = cls.plan_and_cancel()
         cls.next_n = cls.send(DrawGoal(text='N'), 150)
 
     @classmethod
@@ -100,6 +105,26 @@ class DrawAsAnAction(unittest.TestCase):
         client.send_goal(DrawGoal(text='Z'))
         client.wait_for_result(rospy.Duration(10))
         return client.get_state(), client.get_result().message, time.time() - t0
+
+    @classmethod
+    def plan_and_cancel(cls):
+        """A picture of thousands of strokes, cancelled as soon as it is
+        accepted: while it is planned (or before)."""
+        folder = tempfile.mkdtemp(prefix='turtle_letters_action_', dir=SVG_DIR)
+        path = os.path.join(folder, 'many.svg')
+        lines = ''.join(f'<line x1="{i % 90}" y1="{i // 90}" x2="{i % 90 + 0.5}" y2="{i // 90}"/>'
+                        for i in range(8100))
+        with open(path, 'w') as f:
+            f.write('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 90 90" '
+                    f'stroke="black">{lines}</svg>')
+        t0 = time.time()
+        cls.client.send_goal(DrawGoal(svg=path))
+        wait_until(lambda: cls.client.get_state() == GoalStatus.ACTIVE, 30, 'the goal accepted')
+        cls.client.cancel_goal()
+        ended = cls.client.wait_for_result(rospy.Duration(30))
+        shutil.rmtree(folder)
+        return dict(ended=ended, status=cls.client.get_state(), result=cls.client.get_result(),
+                    moved=cls.poses.moving_since(t0))
 
     @classmethod
     def draw_and_cancel(cls):
@@ -179,6 +204,15 @@ class DrawAsAnAction(unittest.TestCase):
         self.assertEqual({(p.x, p.y, p.theta, p.linear_velocity, p.angular_velocity)
                           for p in after},
                          {(after[0].x, after[0].y, after[0].theta, 0.0, 0.0)})
+
+    def test_a_goal_cancelled_while_it_is_planned_ends_at_once_and_takes_no_place(self):
+        c = self.cancelled_planning
+        self.assertTrue(c['ended'], 'no result within 30 s of the cancel')
+        self.assertEqual(c['status'], GoalStatus.PREEMPTED, c['result'].message)
+        self.assertRegex(c['result'].message, 'cancelled (while it was planned|before it began|'
+                                              'while waiting)')
+        self.assertEqual(c['moved'], [])
+        # and the next N takes the place it would have had: test_after_a_cancel...
 
     def test_after_a_cancel_the_next_n_goes_to_the_next_place(self):
         status, result, _ = self.next_n

@@ -21,6 +21,7 @@ from .letters.font import shown
 from .letters.geometry import PlannedPose
 from .letters.plan import SvgFile, plan_request
 from .letters.sheet import Sheet
+from .motion.control import Cancelled
 from .motion.driver import DrawingAborted, TurtleDriver
 from .motion.modes import MODES
 from .settings import ParameterError, Settings, quote_unreadable
@@ -85,7 +86,7 @@ class TurtleController:
     def leave(self):
         """On shutdown: the part given back, our turtles gone (placement.leave)."""
         self.placement.leave()
-        self.spares.remove_all()
+        self.spares.remove_all(closing=True)
 
     def _work(self):
         self.placement.placed.wait()
@@ -97,17 +98,22 @@ class TurtleController:
         self.placement.respawn_if_gone()
         pose = self.driver.poses.wait(cancelled=lambda: order.control.cancelled)
         start = PlannedPose(pose.x, pose.y, pose.theta)
-        job = plan_request(order.request, self.sheet, start, self.settings)
+        mark = self.sheet.mark()
+        try:
+            job = plan_request(order.request, self.sheet, start, self.settings, order.control.check)
+            order.started(job)
+        except Cancelled:       # before it began: it takes no place on the sheet
+            self.sheet.undo(mark)
+            raise
         self.placement.note_cursor(job.chars)
         if job.note:
             rospy.logwarn('%s', job.note)
         rospy.loginfo('Drawing %s', job.summary(self.settings))
-        order.started(job)
         self.turtle.control = order.control
         if job.must_clear:
             self.placement.make_room(self.turtle)
-        if self.settings.parallel and len(job.chars) > 1:
-            draw_in_parallel(self.turtle, self.spares, job.chars)
+        if job.letters:
+            draw_in_parallel(self.turtle, self.spares, job, order.advanced)
         else:
             self.turtle.pen_down()
             MODES[self.settings.mode].carry_out(job.plan, self.turtle, order.advanced)

@@ -44,7 +44,7 @@ class Order:
         if self.control.cancelled:
             raise Cancelled('cancelled before it began')
         self.planned = planned
-        self.progress = Progress(rospy.loginfo, now=self.control.clock)
+        self.progress = Progress(rospy.loginfo, planned.plan, now=self.control.clock)
         self.feedback()
 
     def advanced(self, ink_drawn, ink):
@@ -55,7 +55,7 @@ class Order:
     def feedback(self):
         if self.handle is None or self.planned is None:
             return
-        share, to_go, strokes = self.progress.report(self.planned.plan)
+        share, to_go, strokes = self.progress.report()
         self.handle.publish_feedback(DrawFeedback(
             progress=share, eta=to_go, stroke=strokes, strokes=len(self.planned.plan.strokes),
             paused=self.control.paused))

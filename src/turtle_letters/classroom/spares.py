@@ -7,8 +7,6 @@ import threading
 
 import rospy
 
-from ..letters.geometry import PlannedPose
-from ..letters.plan import plan_text
 from ..motion.driver import DrawingAborted, TurtleDriver, beside, call_briefly
 from ..motion.modes import MODES
 from .diagnosis import CONNECT_SECONDS, not_connected_diagnosis, spawn_refusal
@@ -22,6 +20,8 @@ class Spares:
     def __init__(self, settings, name, Turtle):
         self.settings, self.name, self.Turtle = settings, name, Turtle
         self.live = []
+        self._lock = threading.Lock()     # the drawing thread and the shutdown hook's
+        self._closed = False              # the node is shutting down: no more spares
 
     def spawn(self, number, place):
         driver = TurtleDriver(beside(self.settings.turtle, spare_name(self.name, number)))
@@ -31,42 +31,66 @@ class Spares:
             driver.close()
             raise DrawingAborted(spawn_refusal(driver, e, 'the spare turtle ')) from None
         spare = self.Turtle(driver, self.settings, label=f'{driver.name}: ')
-        self.live.append(spare)
+        with self._lock:
+            self.live.append(spare)
+            closed = self._closed
+        if closed:                      # spawned while the node shut down
+            self.remove_all()
+            raise DrawingAborted('shutting down')
         driver.poses.listen()
         if not driver.wait_connected(CONNECT_SECONDS):
             raise DrawingAborted(not_connected_diagnosis(driver))
         return spare
 
-    def remove_all(self):
-        """Each stops, leaves the canvas, and lets go of its topics."""
-        while self.live:
-            spare = self.live.pop()
+    def remove_all(self, closing=False):
+        """Each stops, leaves the canvas, and lets go of its topics; once
+        `closing` (the node shuts down), a spare spawned later goes too."""
+        with self._lock:
+            spares, self.live = self.live, []
+            self._closed = self._closed or closing
+        for spare in reversed(spares):
             spare.driver.stop()
             call_briefly(spare.driver.kill)
             spare.driver.close()
 
 
-def draw_in_parallel(turtle, spares, chars):
-    """`chars`: (character, place) pairs; `turtle` draws the first. The
-    spares obey the same pause and cancel as `turtle`."""
+def draw_in_parallel(turtle, spares, planned, progress):
+    """`planned` (letters/plan.Planned): a word's characters and each one's
+    plan; `turtle` draws the first. The spares obey the same pause and
+    cancel as `turtle`; `progress(ink_drawn, ink)` hears the whole word's."""
     try:
-        helpers = [spares.spawn(number, place) for number, (_, place) in enumerate(chars[1:], 2)]
+        helpers = [spares.spawn(number, place)
+                   for number, (_, place) in enumerate(planned.chars[1:], 2)]
         for helper in helpers:
             helper.control = turtle.control
-        errors = _all_at_once([lambda t=t, c=c, p=p: draw_one(t, c, p)
-                               for t, (c, p) in zip([turtle] + helpers, chars)])
+        told = _Inks(len(planned.letters), planned.plan.ink, progress)
+        errors = _all_at_once([lambda t=t, p=p, i=i: draw_one(t, p, told.by(i))
+                               for i, (t, p) in enumerate(zip([turtle] + helpers, planned.letters))])
         if errors:
             raise errors[0]
     finally:
         spares.remove_all()
 
 
-def draw_one(turtle, char, place):
-    """One character at its place, from where the turtle stands."""
-    pose = turtle.driver.poses.wait(cancelled=lambda: turtle.control.cancelled)
-    plan = plan_text(char, [place], PlannedPose(pose.x, pose.y, pose.theta), turtle.settings)
+def draw_one(turtle, plan, progress):
+    """One character's plan, by its own turtle."""
     turtle.pen_down()
-    MODES[turtle.settings.mode].carry_out(plan, turtle, lambda drawn, ink: None)
+    MODES[turtle.settings.mode].carry_out(plan, turtle, progress)
+
+
+class _Inks:
+    """Each turtle's ink, told to `progress` as the word's (one at a time)."""
+
+    def __init__(self, turtles, ink, progress):
+        self.drawn, self.ink, self.progress = [0.0] * turtles, ink, progress
+        self._lock = threading.Lock()
+
+    def by(self, i):
+        def told(drawn, _):
+            with self._lock:
+                self.drawn[i] = drawn
+                self.progress(sum(self.drawn), self.ink)
+        return told
 
 
 def _all_at_once(calls):

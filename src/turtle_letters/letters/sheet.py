@@ -40,6 +40,17 @@ class Sheet:
                     self._layout.cursor = self._resume_at
         return self._layout
 
+    def mark(self):
+        """Where the sheet stands, for undo() if what was reserved since is not drawn."""
+        return self._layout, self._layout.cursor if self._layout else None, self._resume_at
+
+    def undo(self, mark):
+        """Back to `mark`: nothing reserved since takes a place (a drawing
+        cancelled before it began)."""
+        self._layout, cursor, self._resume_at = mark
+        if self._layout is not None:
+            self._layout.cursor = cursor
+
     @property
     def cursor(self):
         """Where the next letter goes, once known."""

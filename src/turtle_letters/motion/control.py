@@ -26,6 +26,11 @@ class Control:
     def cancelled(self):
         return self._cancelled
 
+    def check(self):
+        """Raises Cancelled once the drawing is cancelled (for its planning)."""
+        if self._cancelled:
+            raise Cancelled('cancelled while it was planned')
+
     def pause(self, paused):
         """Hold (True) or go on (False); whether that changed anything."""
         with self._lock:

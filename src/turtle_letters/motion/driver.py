@@ -4,6 +4,7 @@ that moves the turtle can leave it coasting."""
 import collections
 import threading
 import time
+import weakref
 
 import rosgraph
 import rosgraph.names
@@ -147,7 +148,7 @@ class TurtleDriver:
         self._spawn = rospy.ServiceProxy(beside(turtle, 'spawn'), Spawn)
         self._kill = rospy.ServiceProxy(beside(turtle, 'kill'), Kill)
         self.poses = PoseStream(rospy.resolve_name(f'{turtle}/pose'), self.exists)
-        rospy.on_shutdown(self._on_shutdown)
+        _stop_on_shutdown(self)
 
     @property
     def cmd_vel_topic(self):
@@ -225,6 +226,7 @@ class TurtleDriver:
             self._stopping = True
         self._cmd_vel.unregister()
         self.poses.close()
+        _OPEN.discard(self)
 
     def set_pen(self, pen, down):
         """Lowering the pen sets its colour and width too (turtlesim's set_pen)."""
@@ -233,15 +235,35 @@ class TurtleDriver:
     def clear(self):
         self._clear()
 
-    def _on_shutdown(self):
+    def last_stop(self):
         """The last word on cmd_vel is a stop, even with a drawing under way."""
         with self._publish_lock:
             if self._stopping:          # closed
                 return
             self._stopping = True
             self._cmd_vel.publish(Twist())
-        # The publisher's queue thread sends it; give it a moment before
-        # rospy closes the topic (the turtle is at most one tick away).
+
+
+# The drivers not closed yet (a closed one is forgotten with it), and the
+# one shutdown hook that stops them all.
+_OPEN = weakref.WeakSet()
+_HOOKED = []
+
+
+def _stop_on_shutdown(driver):
+    _OPEN.add(driver)
+    if not _HOOKED:
+        _HOOKED.append(True)
+        rospy.on_shutdown(_stop_every_driver)
+
+
+def _stop_every_driver():
+    drivers = list(_OPEN)
+    for driver in drivers:
+        driver.last_stop()
+    if drivers:
+        # The publishers' queue threads send the stops; give them a moment
+        # before rospy closes the topics (a turtle is at most one tick away).
         time.sleep(0.1)
 
 

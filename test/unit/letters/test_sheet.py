@@ -36,3 +36,15 @@ def test_a_part_carries_on_from_its_cursor_and_after_a_failure_past_it():
     after = sheet.cursor
     sheet.forget()              # the drawing failed: its place is not used again
     assert sheet.reserve('N', None)[0] == [after]
+
+
+@pytest.mark.parametrize('earlier', [0, 1, 3])
+def test_what_is_undone_takes_no_place_even_where_it_wrapped_the_canvas(earlier):
+    sheet = Sheet(3.0, settings().font)
+    start = PlannedPose(CENTRE, CENTRE, 0.0)
+    for _ in range(earlier):
+        sheet.reserve('N', start)
+    mark = sheet.mark()
+    expected = sheet.reserve('N', start)
+    sheet.undo(mark)
+    assert sheet.reserve('N', start) == expected

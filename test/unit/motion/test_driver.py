@@ -45,3 +45,17 @@ def test_the_oldest_poses_go_when_nobody_reads():
     for number in range(driver.POSES_KEPT + 5):
         stream._on_pose(SimpleNamespace(number=number))
     assert stream.next().number == 5
+
+
+def test_a_closed_driver_is_let_go():
+    """A parallel word's spare turtles each have a driver: once closed, none
+    may stay behind (they used to, one shutdown hook each, word after word)."""
+    import gc
+    import weakref
+    drivers = [driver.TurtleDriver(f'spare_{n}') for n in range(3)]
+    left = [weakref.ref(d) for d in drivers]
+    for d in drivers:
+        d.close()
+    del drivers, d
+    gc.collect()
+    assert [ref() for ref in left] == [None, None, None]
