@@ -9,10 +9,12 @@ import threading
 import time
 import unittest
 
+import rosgraph
 import rospy
 import rostest
 from std_msgs.msg import String
 from turtlesim.msg import Pose
+from turtlesim.srv import Spawn
 
 from support.accuracy import LAB_N_VERTICES
 from support.nodes import (LogWatch, NodeProcess, PoseRecorder, connections, node_pid, simulator,
@@ -23,6 +25,10 @@ from turtle_letters.grading.procstat import cpu_seconds, rss_mb
 # lab's mode is not what these tests are about.
 FAST = ('_mode:=feedback', '_linear_speed:=3.0', '_angular_speed:=3.0')
 CONTROLLER = '/turtlebot_controller'
+
+
+def published():
+    return [topic for topic, _ in rosgraph.Master('/faults_test').getPublishedTopics('')]
 
 
 def controller(*params):
@@ -209,6 +215,25 @@ class Faults(unittest.TestCase):
         sim.send(signal.SIGCONT)
         self.assertEqual(ctl.process.wait(15), 0, ctl.output())
         self.assertNotIn('Traceback', ctl.output())
+
+    def test_3d_a_restart_removes_its_own_spare_turtles_and_no_other(self):
+        """A parallel word killed mid-word leaves its spares; the restarted
+        controller removes those its part recorded, and not turtle1_2, a
+        name a student may have (spares are turtle1__2, ...)."""
+        self.start(simulator())
+        rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
+        rospy.ServiceProxy('/spawn', Spawn)(1.0, 1.0, 0.0, 'turtle1_2')
+        ctl = self.start(controller('_parallel:=true', '_text:=NI', *FAST))
+        wait_until(lambda: '/turtle1__2/pose' in published(), 30, 'the spare turtle',
+                   explain=ctl.output)
+        os.kill(self.wait_for_node(CONTROLLER), signal.SIGKILL)
+        ctl.process.wait(15)
+        again = self.start(controller(*FAST))
+        wait_until(lambda: 'Removed turtle1__2' in again.output(), 30,
+                   'the spare left behind removed', explain=again.output)
+        self.assertNotIn('/turtle1__2/pose', published())
+        self.assertIn('/turtle1_2/pose', published())
+        self.assert_no_traceback(again)
 
     def check_stops_at_once(self, sig):
         self.start(simulator())

@@ -36,7 +36,7 @@ class ParallelWord(unittest.TestCase):
         cls.text = rospy.get_param('~text')
         cls.size = rospy.get_param('~size')
         cls.angular_speed = rospy.get_param('~angular_speed')
-        cls.turtles = ['turtle1'] + [f'turtle1_{i}' for i in range(2, len(cls.text) + 1)]
+        cls.turtles = ['turtle1'] + [f'turtle1__{i}' for i in range(2, len(cls.text) + 1)]
         first = rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
         cls.recorders = [PoseRecorder(turtle=t) for t in cls.turtles]
         cls.recorders[0].wait_connected()
@@ -67,7 +67,7 @@ class ParallelWord(unittest.TestCase):
     def test_the_spare_turtles_are_killed_when_done(self):
         def spares():
             topics = rosgraph.Master('/parallel_word_test').getPublishedTopics('')
-            return [t for t, _ in topics if t.startswith('/turtle1_')]
+            return [t for t, _ in topics if t.startswith('/turtle1__')]
         wait_until(lambda: not spares(), 10, 'the spare turtles to be killed', spares)
 
     def slowest(self):

@@ -44,7 +44,7 @@ class TurtleController:
         self.turtle = Turtle(self.driver, settings)
         self.sheet = Sheet(settings.size, settings.font)
         self.placement = Placement(self.driver, settings, self.sheet)
-        self.spares = Spares(settings, self.driver.name, Turtle)
+        self.spares = Spares(settings, self.driver.name, Turtle, self.placement.note_spares)
         self.jobs = Jobs()
         self.actions = DrawServer(self.jobs, settings.font)
         rospy.on_shutdown(self.leave)

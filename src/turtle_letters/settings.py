@@ -67,17 +67,19 @@ def _text(value, font):
 
 # A turtle's name becomes part of its topic names, so turtlesim itself would
 # fail on one that is not a valid ROS name.
-TURTLE_NAME = re.compile(r'/?([A-Za-z][A-Za-z0-9_]*/)*[A-Za-z][A-Za-z0-9_]*')
+# No two _ in a row: that marks a parallel word's spare turtles (classroom/names.py).
+TURTLE_NAME = re.compile(r'(?!.*__)/?([A-Za-z][A-Za-z0-9_]*/)*[A-Za-z][A-Za-z0-9_]*')
 
 
 def _turtle(value, font=None):
     if not isinstance(value, str) or not TURTLE_NAME.fullmatch(value):
         raise ValueError('a ROS name such as turtle1 or /alice: letters, digits and _, '
-                         'starting with a letter')
+                         'starting with a letter, with no __ (a parallel word\'s spare turtles '
+                         'are NAME__2, NAME__3...)')
     return value
 
 
-STUDENT_NAME = re.compile(r'[A-Za-z][A-Za-z0-9_]*')
+STUDENT_NAME = re.compile(r'(?!.*__)[A-Za-z][A-Za-z0-9_]*')
 
 
 def student_name_problem(name, read_as='str'):
@@ -91,7 +93,8 @@ def student_name_problem(name, read_as='str'):
                 'give a name that starts with a letter')
     if not STUDENT_NAME.fullmatch(name):
         return ('a name is letters (a-z, A-Z), digits and _, starting with a letter, '
-                'with no / or accents (the turtle and the namespace are named after it)')
+                'with no / or accents (the turtle and the namespace are named after it) and '
+                'no __ (a parallel word\'s spare turtles are NAME__2, NAME__3...)')
     return None
 
 

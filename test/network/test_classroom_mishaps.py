@@ -120,7 +120,7 @@ def test_a_classroom_survives_crashes_restarts_a_name_twice_ctrl_c_and_a_dropped
     assert len(fatal) == 1 and 'name:=ann is in use' in fatal[0], output(twin)
 
     # cat: Ctrl-C mid-word.
-    wait_for_line(launches['cat'], r'cat_3: move', 60)
+    wait_for_line(launches['cat'], r'cat__3: move', 60)
     assert stop(launches['cat']) is not None, 'cat did not stop on Ctrl-C'
 
     # dan: SIGKILL mid-drawing, then the same name again.

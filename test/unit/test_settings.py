@@ -110,3 +110,12 @@ def test_student_names_are_one_ros_base_name(name, read_as, wanted):
         assert problem is None
     else:
         assert wanted in problem
+
+
+@pytest.mark.parametrize('name', ['alice', 'turtle1', 'Bob_2', 'x'])
+def test_no_student_and_no_turtle_can_be_named_as_a_spare_turtle(name):
+    from turtle_letters.classroom.names import spare_name
+    for number in (2, 3, 12):
+        assert 'no __' in student_name_problem(spare_name(name, number))
+        with pytest.raises(ParameterError, match='no __'):
+            settings(turtle=spare_name(name, number))

@@ -23,6 +23,7 @@ LAYERS = [
     {'controller', 'talker'},           # the lab's nodes
 ]
 PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors', 'motion.control',
+        'classroom.names',
         'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
         'grading.procstat', 'actions.jobs', 'actions.progress'}
 ROS = ('rospy', 'rosgraph', 'actionlib', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')

@@ -1,15 +1,10 @@
-"""The names of a parallel word's spare turtles: beside the turtle's own
-name (motion.driver.beside), in turtlesim's namespace."""
-import re
+"""The names of a parallel word's spare turtles. No ROS here."""
 
-from ..motion.driver import beside
+# Student and turtle names may not hold two _ in a row (settings.py), so no
+# student's turtle can be named like another's spare.
+SPARE_MARK = '__'
 
 
 def spare_name(name, number):
     """The spare turtle that draws character `number` (2, 3...) of a parallel word."""
-    return f'{name}_{number}'
-
-
-def spare_pose_pattern(turtle, name):
-    """A regular expression for the pose topics of `name`'s spare turtles."""
-    return re.escape(beside(turtle, spare_name(name, ''))) + r'([0-9]+)/pose$'
+    return f'{name}{SPARE_MARK}{number}'

@@ -6,17 +6,14 @@ claims.py) and is spawned there; a part our name left behind (a crash) is
 taken back with its turtle and where its letters had got to. On the way out
 the part is given back and the turtles we spawned are killed.
 """
-import re
 import threading
 
-import rosgraph
 import rospy
 
 from ..letters.font import shown
 from ..motion.driver import call_briefly
 from .claims import Claims, Held
 from .diagnosis import CONNECT_SECONDS, not_connected_diagnosis, spawn_refusal
-from .names import spare_name, spare_pose_pattern
 from .parts import fits_a_line, free_place, letter_bounds, on_canvas, overlaps, part_box, text_width
 
 CLAIM_ATTEMPTS = 20
@@ -53,7 +50,7 @@ class Placement:
         except Held as e:
             raise Refused(f'turtle {self.driver.name} is already driven by {e}, which is alive; '
                           'give another name (turtle:= or name:=)') from None
-        remove_spares_left_behind(self.driver, self.claims.others())
+        remove_spares_left_behind(self.driver, left)
         exists = self.driver.exists(wait=0.5)   # turtlesim offers spawn a moment before turtle1
         if exists and (left is None or left['whole_canvas']):
             self._adopt_for_the_lab(say_wait=not waited)
@@ -62,12 +59,15 @@ class Placement:
         self.placed.set()
 
     def respawn_if_gone(self):
-        """turtlesim came back without our turtle: it starts again at its
-        part's first place. Until a spawn succeeds (raises Refused), the
-        turtle is still ours to spawn, at the next trigger."""
+        """turtlesim came back without our turtle: it starts again at its part's
+        first place. Until a spawn succeeds (else Refused), it is ours to spawn."""
         if self.spawned and not self.driver.exists():
             self.driver.poses.forget()
             self._spawn(self.sheet.part[0])
+
+    def note_spares(self, names):
+        """Our parallel word's spares, kept with our part: a restart removes these only."""
+        self.claims.mark(spares=sorted(names))
 
     def note_cursor(self, chars):
         """A restart of ours carries on from where the next letter goes; the
@@ -189,21 +189,12 @@ def _choose(settings, width, left, taken):
     return place, box
 
 
-def remove_spares_left_behind(driver, live_parts):
-    """Spare turtles of a parallel word that a crash of ours left on the canvas."""
-    for spare in spares_on_canvas(driver, live_parts):
-        rospy.loginfo('Removing %s, a spare turtle left behind by an earlier run', spare)
-        call_briefly(lambda n=spare: driver.kill(n))
-
-
-def spares_on_canvas(driver, live_parts):
-    """Turtles named like our parallel words' spares (NAME_2, NAME_3...) that
-    no live controller claims (`live_parts`): an earlier run of ours left them."""
-    pattern = re.compile(spare_pose_pattern(driver.turtle, driver.name))
-    try:
-        topics = rosgraph.Master(rospy.get_name()).getPublishedTopics('')
-    except Exception:  # the master is gone: nothing to tidy
-        return []
-    spares = {spare_name(driver.name, m.group(1)) for t, _ in topics for m in [pattern.match(t)]
-              if m}
-    return sorted(spares - set(live_parts))
+def remove_spares_left_behind(driver, left):
+    """The spare turtles of a parallel word that a crash of ours left on the
+    canvas: those our claim `left` behind records, and no other turtle."""
+    for spare in (left or {}).get('spares', []):
+        try:
+            driver.kill(spare)
+        except rospy.ServiceException:      # gone already, with an earlier turtlesim
+            continue
+        rospy.loginfo('Removed %s, a spare turtle left behind by an earlier run', spare)

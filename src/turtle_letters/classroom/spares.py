@@ -2,7 +2,8 @@
 first character, and a spare turtle spawned at each other character's place
 draws that one. The spares die with their word on every path: done, failed,
 or the node shutting down (Controller.leave); a crash leaves them to the
-next start (placement.spares_on_canvas)."""
+next start, which removes those recorded with its part
+(placement.remove_spares_left_behind)."""
 import threading
 
 import rospy
@@ -17,8 +18,9 @@ class Spares:
     """The spare turtles of the word being drawn, while they live; each a
     `Turtle` (turtle.Turtle, the controller's own kind) on a driver of its own."""
 
-    def __init__(self, settings, name, Turtle):
-        self.settings, self.name, self.Turtle = settings, name, Turtle
+    def __init__(self, settings, name, Turtle, note=lambda names: None):
+        """`note(names)` hears the names of the spares alive, each time they change."""
+        self.settings, self.name, self.Turtle, self.note = settings, name, Turtle, note
         self.live = []
         self._lock = threading.Lock()     # the drawing thread and the shutdown hook's
         self._closed = False              # the node is shutting down: no more spares
@@ -34,6 +36,7 @@ class Spares:
         with self._lock:
             self.live.append(spare)
             closed = self._closed
+            self.note([s.driver.name for s in self.live])
         if closed:                      # spawned while the node shut down
             self.remove_all()
             raise DrawingAborted('shutting down')
@@ -48,6 +51,8 @@ class Spares:
         with self._lock:
             spares, self.live = self.live, []
             self._closed = self._closed or closing
+        if spares and not closing:
+            self.note([])
         for spare in reversed(spares):
             spare.driver.stop()
             call_briefly(spare.driver.kill)
