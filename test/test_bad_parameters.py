@@ -16,6 +16,9 @@ CASES = [
     ('grade.py', ['_timeout:=-1'], '~timeout is -1; allowed: a number > 0 (s)'),
     ('grade.py', ['_tolerance:=.nan'], '~tolerance is nan; allowed: a number > 0 (m)'),
     ('scoreboard.py', ['_tolerance:=wide'], "~tolerance is 'wide'; allowed: a number > 0 (m)"),
+    ('grade.py', ['_out:=/etc/hostname/grades'],
+     "~out is '/etc/hostname/grades'; allowed: a folder this node can create or write in"),
+    ('scoreboard.py', ['_out:=5'], '~out is 5; allowed: the path of a folder'),
     ('turtle_controller.py', ['_text:=HI', f'_svg:={FLOWER}'],
      "~text is 'HI' and ~svg is"),
 ]

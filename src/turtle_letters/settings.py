@@ -145,6 +145,18 @@ def positive(value, font=None):
     return float(value)
 
 
+def writable_folder(value, font=None):
+    """A folder this node can create, or write in: its path, made absolute."""
+    if not isinstance(value, str) or not value.strip():
+        raise ValueError('the path of a folder')
+    folder = existing = os.path.abspath(os.path.expanduser(value))
+    while not os.path.exists(existing):
+        existing = os.path.dirname(existing)
+    if not os.path.isdir(existing) or not os.access(existing, os.W_OK | os.X_OK):
+        raise ValueError('a folder this node can create or write in')
+    return folder
+
+
 def _size(value, font):
     size = positive(value)
     if size > largest_size(font):

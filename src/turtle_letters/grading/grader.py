@@ -21,7 +21,8 @@ from turtlesim.msg import Pose
 
 from ..classroom.liveness import answers
 from ..letters.geometry import PlannedPose
-from ..settings import Parameter, ParameterError, Settings, positive, read_parameter
+from ..settings import (Parameter, ParameterError, Settings, positive, read_parameter,
+                        writable_folder)
 from .files import report_stem
 from .procstat import cpu_seconds
 from .scoring import SETTLE, DrawingWatch, Tolerances, ideal_letter, score
@@ -36,6 +37,8 @@ GRADING = {p.name: p for p in (
     Parameter('settle', 'float', str(SETTLE), 's', 'standing still this long ends a drawing',
               positive),
     Parameter('timeout', 'float', '300.0', 's', 'a drawing not ended by then fails', positive),
+    Parameter('out', 'str', '~/.ros/turtle_letters_grades', '',
+              "where each drawing's report and picture are saved", writable_folder),
 )}
 
 
@@ -190,10 +193,10 @@ def main():
         settings = Settings(rospy.get_param)
         tolerances = Tolerances(read_grading('tolerance'))
         settle, timeout = read_grading('settle'), read_grading('timeout')
+        folder = read_grading('out')
     except ParameterError as e:
         rospy.logfatal('%s: %s', rospy.get_name(), e)
         sys.exit(2)
-    folder = os.path.expanduser(rospy.get_param('~out', '~/.ros/turtle_letters_grades'))
     save = Saver(folder)
     published = rospy.Publisher('~report', String, queue_size=10, latch=True)
 

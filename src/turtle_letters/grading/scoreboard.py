@@ -102,10 +102,10 @@ def main():
     rospy.init_node('scoreboard')
     try:
         tolerances = Tolerances(read_grading('tolerance'))
+        folder = read_grading('out')
     except ParameterError as e:
         rospy.logfatal('%s: %s', rospy.get_name(), e)
         raise SystemExit(2)
-    folder = os.path.expanduser(rospy.get_param('~out', '~/.ros/turtle_letters_grades'))
     Scoreboard(tolerances, folder)
     rospy.loginfo('Scoreboard: grading every student turtle with a part of the canvas, vertices '
                   'within %.0f mm; the table goes to %s and %s/scoreboard.png',
