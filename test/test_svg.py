@@ -4,6 +4,7 @@ smooth mode: every vertex of the flattened strokes reached, the path on the
 strokes and the pen-up travel (a late command may run a tick past a vertex,
 as in test_words), and the picture in the file's stroke colours."""
 import math
+import os
 import time
 import unittest
 
@@ -62,14 +63,18 @@ class SvgLineArt(unittest.TestCase):
     def test_the_file_is_drawn(self):
         self.assertEqual(self.refused, 0)
 
-    def test_a_file_that_is_no_svg_is_refused_in_one_line_and_nothing_moves(self):
+    def test_a_file_that_is_no_svg_or_is_not_ours_to_read_is_refused_in_one_line(self):
         t0 = time.time()
-        self.pub.publish(String('/etc/hostname'))
-        wait_until(lambda: self.logs.count('Refused', CONTROLLER), 20, 'the refusal')
+        picture = os.path.join(os.path.dirname(rospy.get_param('~svg')), 'lab-n.png')
+        for path, count in ((picture, 1), ('/etc/hostname', 2)):     # a PNG in doc/; not ours
+            self.pub.publish(String(path))
+            wait_until(lambda: self.logs.count('Refused', CONTROLLER) == count, 20, 'the refusal')
         rospy.sleep(1.0)
         refusals = [m.msg for m in self.logs.messages if 'Refused' in m.msg]
-        self.assertEqual(len(refusals), 1)
-        self.assertIn('not an SVG file', refusals[0])
+        self.assertEqual(len(refusals), 2)
+        self.assertIn('not an SVG file (its root: not XML', refusals[0])
+        self.assertIn("'/etc/hostname': only files under the folders of ~svg_dirs are read",
+                      refusals[1])
         self.assertEqual(self.poses.moving_since(t0), [])
 
     def test_every_vertex_is_reached(self):
