@@ -2,9 +2,11 @@
 one place. No ROS here: the node passes rospy.get_param in, and the launch
 file's check passes the launch arguments, so a bad value is refused before
 anything starts."""
+import ast
 import math
 import os
 import re
+import sys
 from typing import Callable, NamedTuple
 
 import yaml
@@ -286,6 +288,37 @@ class Settings:
         if self.text and self.svg:
             raise ParameterError(f'~text is {self.text!r} and ~svg is {self.svg!r}; '
                                  'allowed: one of them, or neither')
+
+
+def check_launch(argv):
+    """draw_letter.launch's check, run as a `<param command=...>` before any
+    node starts: a bad value prints one line saying which, and a non-zero
+    exit makes roslaunch stop and itself exit non-zero (a node that refuses
+    its parameters cannot). `argv`: name=HEX for each launch argument, its
+    value as roslaunch reads it (7 for 007, True for true) as a Python repr
+    in hexadecimal, so that no quote or space can break the command line."""
+    values = {}
+    for argument in argv:
+        name, _, encoded = argument.partition('=')
+        values['~' + name] = _as_given(bytes.fromhex(encoded).decode('utf-8'), TABLE[name].type)
+    try:
+        settings = Settings(lambda name, default: values.get(name, default))
+    except ParameterError as e:
+        print(f'[FATAL] turtlebot_controller: {e}', file=sys.stderr)
+        return 2
+    print(f'letter={settings.letter} size={settings.size:g} mode={settings.mode}')
+    return 0
+
+
+def _as_given(text, type_):
+    """The value of one argument as the controller's <param> gets it."""
+    try:
+        value = ast.literal_eval(text)
+    except (ValueError, SyntaxError):
+        value = float(text)         # inf and nan have no literal
+    if type_ == 'str' and not isinstance(value, str):   # a <param type="str">
+        return str(value).lower() if isinstance(value, bool) else str(value)
+    return value
 
 
 def _integer(value):

@@ -1,1 +1,1 @@
-"""A drawing as a request: which are taken (jobs), the draw action's server and client, and progress."""
+"""A drawing as a request: which are taken, the draw action's server and client, progress."""

@@ -37,7 +37,8 @@ class Progress:
             return 0.0
         spent = self._told_at - self.started
         pace = spent / self._planned_at if self._planned_at > 0 else 1.0
-        return max(0.0, (self.plan.seconds - self._planned_at) * pace - (self.now() - self._told_at))
+        since = self.now() - self._told_at
+        return max(0.0, (self.plan.seconds - self._planned_at) * pace - since)
 
     def _planned(self, ink_drawn):
         """The plan's seconds when `ink_drawn` m are down (between two points

@@ -1,1 +1,1 @@
-"""Many students on one turtlesim: parts of the canvas, the room, spare turtles, liveness and network checks."""
+"""Many students on one turtlesim: parts of the canvas, the room, spares, liveness, network."""

@@ -7,11 +7,14 @@ refuses or times out. The same question, asked before this node registers,
 keeps a second node of the same name from making the master shut the first
 one down.
 """
+import ast
 import sys
 import xmlrpc.client
 
 import rosgraph
 import rosgraph.names
+
+from ..settings import student_name_problem
 
 ANSWER_SECONDS = 1.0    # s a live node takes, at most, to answer over a classroom's network
 
@@ -69,3 +72,27 @@ def refuse_a_second(default, argv=None):
               'would stop that one. Stop it first, or give this one another name '
               '(name:= or __ns:=).', file=sys.stderr, flush=True)
         raise SystemExit(2)
+
+
+def check_student_launch(argv):
+    """student.launch's check of name:=, run as a `<param command=...>`
+    before any node starts: a bad name, or one whose controller is alive
+    already (a second launch would make the master shut the first one down),
+    prints one line and exits non-zero, so roslaunch stops before starting
+    anything. `argv[0]`: the Python repr of the value roslaunch read (it
+    reads name:=true as True), in hexadecimal (no quote or space can break
+    the command)."""
+    value = ast.literal_eval(bytes.fromhex(argv[0]).decode('utf-8'))
+    raw = str(value).lower() if isinstance(value, bool) else str(value)
+    problem = student_name_problem(raw, type(value).__name__)
+    if problem:
+        print(f'[FATAL] student.launch: name:={raw}: {problem}', file=sys.stderr)
+        return 2
+    controller = f'/{raw}/turtlebot_controller'
+    live = running(controller)
+    if live:
+        print(f'[FATAL] student.launch: name:={raw} is in use: {controller} is running (pid '
+              f'{live[1]} at {live[0]}); stop it first, or choose another name', file=sys.stderr)
+        return 2
+    print(raw)
+    return 0

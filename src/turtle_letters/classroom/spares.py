@@ -69,8 +69,9 @@ def draw_in_parallel(turtle, spares, planned, progress):
         for helper in helpers:
             helper.control = turtle.control
         told = _Inks(len(planned.letters), planned.plan.ink, progress)
+        turtles = [turtle] + helpers
         errors = _all_at_once([lambda t=t, p=p, i=i: draw_one(t, p, told.by(i))
-                               for i, (t, p) in enumerate(zip([turtle] + helpers, planned.letters))])
+                               for i, (t, p) in enumerate(zip(turtles, planned.letters))])
         if errors:
             raise errors[0]
     finally:

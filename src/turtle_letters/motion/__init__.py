@@ -1,1 +1,1 @@
-"""Carrying a plan out on a turtle, tick by tick: the modes, the executors, pause and cancel, and the turtle's ROS plumbing."""
+"""Carrying a plan out, tick by tick: modes, executors, pause and cancel, the ROS driver."""
