@@ -10,14 +10,15 @@ import rostest
 
 DOC = os.path.join(os.path.dirname(os.path.realpath(__file__)), '..', 'doc')
 FLOWER = os.path.realpath(os.path.join(DOC, 'flower.svg'))
+NOT_A_FOLDER = os.path.realpath(__file__)
 
 CASES = [
     ('grade.py', ['_settle:=soon'], "~settle is 'soon'; allowed: a number > 0 (s)"),
     ('grade.py', ['_timeout:=-1'], '~timeout is -1; allowed: a number > 0 (s)'),
     ('grade.py', ['_tolerance:=.nan'], '~tolerance is nan; allowed: a number > 0 (m)'),
     ('scoreboard.py', ['_tolerance:=wide'], "~tolerance is 'wide'; allowed: a number > 0 (m)"),
-    ('grade.py', ['_out:=/etc/hostname/grades'],
-     "~out is '/etc/hostname/grades'; allowed: a folder this node can create or write in"),
+    ('grade.py', [f'_out:={NOT_A_FOLDER}/grades'],            # under a file
+     f"~out is '{NOT_A_FOLDER}/grades'; allowed: a folder this node can create or write in"),
     ('scoreboard.py', ['_out:=5'], '~out is 5; allowed: the path of a folder'),
     ('turtle_controller.py', ['_text:=HI', f'_svg:={FLOWER}'],
      "~text is 'HI' and ~svg is"),
