@@ -11,7 +11,7 @@ import threading
 import rospy
 
 from ..letters.font import shown
-from ..motion.driver import call_briefly
+from ..motion.driver import DrawingAborted, call_briefly
 from .claims import Claims, Held
 from .diagnosis import CONNECT_SECONDS, not_connected_diagnosis, spawn_refusal
 from .parts import fits_a_line, free_place, letter_bounds, on_canvas, overlaps, part_box, text_width
@@ -19,8 +19,9 @@ from .parts import fits_a_line, free_place, letter_bounds, on_canvas, overlaps, 
 CLAIM_ATTEMPTS = 20
 
 
-class Refused(RuntimeError):
-    """This controller cannot have a turtle or a place: it says why and exits."""
+class Refused(DrawingAborted):
+    """This controller cannot have a turtle or a place: it says why, and
+    exits at start; later (a failed respawn) the drawing stops, no more."""
 
 
 class Placement:
