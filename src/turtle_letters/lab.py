@@ -6,7 +6,7 @@ ahead at ~linear_speed, each timed). The turtle starts them at the letter's
 lower-left corner, facing +x, as turtle1 stands when turtlesim starts.
 
 Everything else in the package takes the N from here: the builtin font's N
-is the path these calls trace (letters/written.py), so the layout, the
+is the path these calls trace (letters/font.py), so the layout, the
 feedback and smooth modes and the grader all use the N written below.
 Change a number and the turtle draws, and the grader expects, your change.
 """

@@ -10,9 +10,11 @@ six calls (lab.py) trace, and timed mode runs those calls to draw it.
 from typing import Callable, Dict, List, NamedTuple, Optional, Tuple
 
 from ..lab import LAB_SIZE, draw_the_labs_n
-from .written import trace
+from .geometry import PlannedPose
+from .primitives import Line, written_steps
 
 Point = Tuple[float, float]
+PRECISION = 12      # decimals kept of a traced point: cos(90 deg) is 6e-17, not 0
 
 LETTER_SPACING = 0.3    # gap between letter boxes
 LINE_HEIGHT = 1.4       # baseline to baseline
@@ -33,8 +35,11 @@ class Glyph(NamedTuple):
 
 
 def written_glyph(program, size):
-    """A glyph of one stroke: the path `program` traces."""
-    stroke = trace(program, size)
+    """A glyph of one stroke: the path `program`'s calls trace from (0, 0)
+    facing +x, in letter heights (it is written `size` m high)."""
+    steps, _ = written_steps(Writer(program, size), 1.0 / size, PlannedPose(0.0, 0.0, 0.0), 'ccw')
+    stroke = [(0.0, 0.0)] + [(round(s.x, PRECISION), round(s.y, PRECISION))
+                             for s in steps if isinstance(s, Line)]
     return Glyph(max(x for x, _ in stroke), [stroke], Writer(program, size))
 
 

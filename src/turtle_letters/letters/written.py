@@ -1,15 +1,12 @@
 """Letters written as the lab writes them: a function that calls
 rotate(degrees) and move(meters) on the turtle it is given (lab.py). No ROS here.
 
-record() runs one on a turtle that only notes the calls: the letter's
-stroke for the font (trace), and the steps feedback mode steers. In timed
-mode the function itself runs on the real turtle (motion/modes.py), through
-Scaled, at the letter's size.
+record() runs one on a turtle that only notes the calls: from them come the
+letter's stroke for the font and the steps feedback mode steers
+(primitives.written_steps). In timed mode the function itself runs on the
+real turtle (motion/modes.py), through Scaled, at the letter's size.
 """
-import math
 from typing import Callable, List, Tuple
-
-PRECISION = 12      # decimals kept of a traced point: cos(90 deg) is 6e-17, not 0
 
 
 class _Recorder:
@@ -28,19 +25,6 @@ def record(program: Callable) -> List[Tuple[str, float]]:
     recorder = _Recorder()
     program(recorder)
     return recorder.calls
-
-
-def trace(program: Callable, size: float) -> List[Tuple[float, float]]:
-    """The stroke `program` draws from (0, 0) facing +x, in units of `size`
-    (the letter height it is written at)."""
-    heading, points = 0.0, [(0.0, 0.0)]
-    for call, amount in record(program):
-        if call == 'rotate':
-            heading += math.radians(amount)
-        else:
-            x, y = points[-1]
-            points.append((x + amount * math.cos(heading), y + amount * math.sin(heading)))
-    return [(round(x / size, PRECISION), round(y / size, PRECISION)) for x, y in points]
 
 
 def turn_as_told(degrees: float, direction: str) -> float:
