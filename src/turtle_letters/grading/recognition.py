@@ -1,0 +1,131 @@
+"""Which letter of A-Z a path draws, at any size, place and aspect. No ROS.
+
+Each candidate (the builtin font's glyph, and the ways cadets really draw
+it, VARIANTS) is stretched onto the path's box, its height and width each on
+its own, and the two are compared both ways: how far the path strays from
+the candidate's strokes, and how far the strokes are from anything drawn.
+The worse of the two, as a share of the letter's height, is the fit; the
+best-fitting candidate is the letter, if its fit is at most READABLE.
+A path has no pen-up moves: a cadet retraces strokes to reach the next
+one, which costs nothing here, since retraced ink lies on the strokes.
+"""
+import math
+import string
+from typing import Dict, List, NamedTuple, Optional, Tuple
+
+from ..letters.font import FONT
+
+Point = Tuple[float, float]
+READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
+SAMPLE = 0.02       # share of the height between compared points
+MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
+
+_SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
+_SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
+# How cadets draw letters with rotate and move, beside the font's glyphs:
+# square corners, a K's arms meeting at the stem's middle, an A's bar from a
+# quarter to half its height, an N with level feet.
+VARIANTS: List[Tuple[str, List[List[Point]]]] = [
+    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
+    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),
+    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.15, 0.5), (0.45, 0.5)]]),
+    ('B', [_SQUARE_P, [(0.6, 0.5), (0.6, 0), (0, 0)]]),
+    ('C', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0)]]),
+    ('D', [_SQUARE_O]),
+    ('G', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0), (0.6, 0.45), (0.3, 0.45)]]),
+    ('J', [[(0.6, 1), (0.6, 0), (0, 0), (0, 0.3)]]),
+    ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
+    ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
+    ('N', [[(0, 0), (0, 1), (0.6, 0), (0.6, 1)]]),
+    ('O', [_SQUARE_O]),
+    ('P', [_SQUARE_P]),
+    ('Q', [_SQUARE_O, [(0.35, 0.3), (0.6, 0)]]),
+    ('R', [_SQUARE_P + [(0.6, 0)]]),
+    ('R', [_SQUARE_P + [(0.3, 0.5), (0.6, 0)]]),
+    ('S', [[(0.6, 1), (0, 1), (0, 0.5), (0.6, 0.5), (0.6, 0), (0, 0)]]),
+    ('U', [[(0, 1), (0, 0), (0.6, 0), (0.6, 1)]]),
+    ('W', [[(0, 1), (0.175, 0), (0.35, 1), (0.525, 0), (0.7, 1)]]),
+]
+CANDIDATES: List[Tuple[str, List[List[Point]]]] = \
+    [(c, FONT[c].strokes) for c in string.ascii_uppercase] + VARIANTS
+
+
+class Fit(NamedTuple):
+    letter: str
+    fit: float                  # the worst deviation, as a share of the path's height
+    strokes: List[List[Point]]  # the candidate on the path's box, m
+
+
+class Reading(NamedTuple):
+    letter: Optional[str]       # None: no letter reads well enough
+    best: Optional[Fit]         # the best-fitting candidate, read or not
+    fits: Dict[str, Fit]        # the best fit of each letter
+
+
+def box(points):
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    return min(xs), min(ys), max(xs) - min(xs), max(ys) - min(ys)
+
+
+def placed(strokes, path_box):
+    """`strokes` stretched onto `path_box`, keeping their width-to-height
+    within MAX_STRETCH of their own (a line is not every letter squashed)."""
+    x0, y0, w0, h0 = box([p for s in strokes for p in s])
+    x, y, w, h = path_box
+    aspect = min(max(w / h, w0 / h0 / MAX_STRETCH), w0 / h0 * MAX_STRETCH)
+    width, left = aspect * h, x + (w - aspect * h) / 2
+    return [[(left + (px - x0) / w0 * width, y + (py - y0) / h0 * h) for px, py in s]
+            for s in strokes]
+
+
+def samples(lines, step):
+    """Points along polylines, at most `step` apart."""
+    points = []
+    for line in lines:
+        points.append(line[0])
+        for a, b in zip(line, line[1:]):
+            n = max(1, math.ceil(math.dist(a, b) / step))
+            points.extend((a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n)
+                          for i in range(1, n + 1))
+    return points
+
+
+def farthest(points, others, enough=math.inf):
+    """How far the point of `points` farthest from `others` lies from them;
+    stops early once that is past `enough` (the fit is already worse)."""
+    worst = 0.0
+    for p in points:
+        nearest = math.inf
+        for q in others:
+            d = (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2
+            if d < nearest:
+                nearest = d
+                if nearest <= worst:
+                    break
+        worst = max(worst, nearest)
+        if worst > enough:
+            break
+    return math.sqrt(worst)
+
+
+def read(path, letters=string.ascii_uppercase) -> Reading:
+    """The letter of `letters` that `path` ((x, y), m) draws, best fit first."""
+    if len(path) < 2 or box(path)[3] <= 0:
+        return Reading(None, None, {})
+    path_box = box(path)
+    height = path_box[3]
+    drawn = samples([path], SAMPLE * height)
+    fits: Dict[str, Fit] = {}
+    for letter, strokes in CANDIDATES:
+        if letter not in letters:
+            continue
+        shape = placed(strokes, path_box)
+        bound = min(fits[letter].fit if letter in fits else math.inf, 2 * READABLE) * height
+        away = farthest(drawn, samples(shape, SAMPLE * height), bound)
+        if away <= bound:
+            away = max(away, farthest(samples(shape, SAMPLE * height), drawn, bound))
+        if away / height < (fits[letter].fit if letter in fits else math.inf):
+            fits[letter] = Fit(letter, away / height, shape)
+    best = min(fits.values(), key=lambda f: f.fit, default=None)
+    letter = best.letter if best is not None and best.fit <= READABLE else None
+    return Reading(letter, best, fits)

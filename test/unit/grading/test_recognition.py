@@ -1,0 +1,79 @@
+"""Which letter a path draws: every builtin letter at several sizes, places
+and aspects, drawn as cadets draw (retraced, rounded), the variants cadets
+really draw, and paths that are no letter at all."""
+import math
+import random
+import string
+
+import pytest
+
+from turtle_letters.grading.recognition import READABLE, read
+from turtle_letters.letters.font import FONT
+
+from support.cadet_paths import placed, retraced, rounded
+
+SHAPES = [(3.0, 1.0, 5.5, 5.5), (0.5, 1.8, 1.0, 9.0), (2.0, 0.5, 8.0, 1.0)]
+
+
+@pytest.mark.parametrize('letter', string.ascii_uppercase)
+def test_every_builtin_letter_is_read_at_any_size_place_and_aspect(letter):
+    for height, width_scale, left, bottom in SHAPES:
+        path = placed(rounded(retraced(FONT[letter].strokes), 0.03), left, bottom, height,
+                      width_scale)
+        reading = read(path)
+        assert reading.letter == letter, (height, width_scale, reading.best)
+        assert reading.best.fit < 0.05, (height, width_scale, reading.best)
+
+
+def test_a_k_with_its_arms_meeting_at_the_middle_of_the_stem():
+    k = [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]
+    reading = read(placed(rounded(retraced(k), 0.03), 2.0, 2.0, 2.0))
+    assert reading.letter == 'K' and reading.best.fit < 0.05
+
+
+@pytest.mark.parametrize('bar', [0.25, 0.3, 0.4, 0.5])
+def test_an_a_with_its_bar_from_a_quarter_to_half_its_height(bar):
+    a = [[(0, 0), (0.3, 1), (0.6, 0)], [(0.3 * bar, bar), (0.6 - 0.3 * bar, bar)]]
+    reading = read(placed(retraced(a), 1.0, 1.0, 3.0))
+    assert reading.letter == 'A' and reading.best.fit < 0.05, reading.best
+
+
+def test_the_labs_own_n_and_a_cadets_level_n():
+    lab_n = read(placed(FONT['N'].strokes[0], 5.5, 5.5, 3.0))
+    level_n = read(placed(rounded([(0, 0), (0, 1), (0.7, 0), (0.7, 1)], 0.03), 1, 1, 2.5))
+    assert lab_n.letter == level_n.letter == 'N'
+
+
+def test_the_fit_is_the_worst_deviation_as_a_share_of_the_height():
+    l_shape = [(0, 1), (0, 0), (0.6, 0)]
+    bent = [(0.0, 2.0), (0.1, 1.0), (0.0, 0.0), (1.2, 0.0)]   # the stem bowed by 0.1 m
+    reading = read(placed(bent, 0, 0, 1.0) and bent)
+    assert reading.letter == 'L'
+    assert reading.best.fit == pytest.approx(0.1 / 2.0, abs=0.012)
+    assert read(placed(l_shape, 0, 0, 2.0)).best.fit < 0.01
+
+
+def _spiral():
+    return [(5 + t / 20 * math.cos(t), 5 + t / 20 * math.sin(t)) for t in
+            [i * 0.1 for i in range(400)]]
+
+
+def _scribble():
+    rng, point, path = random.Random(7), (5.0, 5.0), []
+    for _ in range(60):
+        point = (point[0] + rng.uniform(-1, 1), point[1] + rng.uniform(-1, 1))
+        path.append(point)
+    return path
+
+
+@pytest.mark.parametrize('path', [
+    _spiral(), _scribble(),
+    [(1, 1), (4, 1), (2.5, 4), (1, 1)],             # a triangle
+    [(1, 1), (3, 1)],                               # a line along x
+    [(2, 2), (2, 2)],                               # the turtle never moved
+    [(2, 2)],
+], ids=['spiral', 'scribble', 'triangle', 'flat line', 'still', 'one pose'])
+def test_paths_that_are_no_letter(path):
+    reading = read(path)
+    assert reading.letter is None
+    assert reading.best is None or reading.best.fit > READABLE
