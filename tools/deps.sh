@@ -5,7 +5,7 @@ source "$(dirname "$0")/env.sh"
 
 # On every platform: the compiler catkin's top-level CMake project needs, and
 # what the tests and the headless run use.
-COMMON="g++ git hershey-fonts-data iproute2 python3-pytest python3-pyqt5 python3-tqdm python3-yaml
+COMMON="bubblewrap g++ git hershey-fonts-data iproute2 python3-pytest python3-pyqt5 python3-tqdm python3-yaml
         tmux"
 if [ -d /opt/ros/noetic ]; then
   # Ubuntu 20.04 with ROS Noetic: the real turtlesim.

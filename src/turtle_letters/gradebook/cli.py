@@ -1,0 +1,219 @@
+"""`grade_class.py`: a class's lab packages graded as handed in.
+
+    grade_class.py SUBMISSIONS --roster ROSTER.csv --out OUT [--jobs N] [--rubric FILE]
+    grade_class.py --one FOLDER --name NAME [--letter L] --out OUT   (exit 0 pass, 1 fail)
+    grade_class.py --gradescope           (/autograder/submission to results/results.json)
+
+Each student in roster order, N at a time, each in a sandbox with a ROS
+master of its own (session.py); the rubric scores what happened (rubric.py)
+and reports.py writes it out. Exit 0 once every student has a row, 2 on
+input that stops grading before anything runs.
+"""
+import argparse
+import concurrent.futures
+import json
+import os
+import shutil
+import sys
+import tempfile
+import time
+
+import rospkg
+
+from ..grading.recognition import read
+from . import observations as seen
+from . import reports, rubric as rubrics, sandbox, session, submission
+from .roster import RosterError, Student, first_letter
+from .roster import read as read_roster
+
+GRADESCOPE = '/autograder'
+
+
+def arguments(argv):
+    parser = argparse.ArgumentParser(prog='grade_class.py', description=__doc__.split('\n')[0])
+    parser.add_argument('submissions', nargs='?', help='a folder per student, named by their id')
+    parser.add_argument('--roster', help='CSV with id,name and optionally letter')
+    parser.add_argument('--out', help='where the grades go')
+    parser.add_argument('--jobs', type=int, default=1, help='students graded at once (1)')
+    parser.add_argument('--rubric', help='a YAML rubric over the package default')
+    parser.add_argument('--one', metavar='FOLDER', help='grade one submission; exit 0 on pass')
+    parser.add_argument('--name', default='', help="with --one: the cadet's name")
+    parser.add_argument('--letter', default='', help='with --one: the letter expected')
+    parser.add_argument('--gradescope', action='store_true',
+                        help=f'grade AUTOGRADER/submission into AUTOGRADER/results/results.json')
+    parser.add_argument('--autograder', default=GRADESCOPE,
+                        help=f"with --gradescope: Gradescope's folder ({GRADESCOPE})")
+    args = parser.parse_args(argv)
+    modes = [bool(args.submissions), bool(args.one), args.gradescope]
+    if sum(modes) != 1:
+        parser.error('give SUBMISSIONS with --roster, or --one FOLDER, or --gradescope')
+    if args.submissions and not (args.roster and args.out):
+        parser.error('SUBMISSIONS needs --roster and --out')
+    if args.one and not (args.out and (args.name or args.letter)):
+        parser.error('--one needs --out, and --name or --letter')
+    if args.jobs < 1:
+        parser.error(f'--jobs {args.jobs}: at least 1')
+    return args
+
+
+def default_rubric():
+    return os.path.join(rospkg.RosPack().get_path('turtle_letters'), 'config', 'rubric.yaml')
+
+
+def facts_of(student, rubric, work, hidden):
+    """Run the student's submission and say what happened."""
+    if student.folder is None:
+        return rubrics.Facts(student.expected, 'no submission', *[None] * 6), []
+    package = submission.find(student.folder)
+    if package.problem:
+        return rubrics.Facts(student.expected, package.problem, *[None] * 6), []
+    run = session.run(package, work, rubric.limits, hidden)
+    drawing = reading = None
+    if run.trigger is not None:
+        drawing = seen.drawing(run.events, run.since, rubric.limits.settle, run.finished)
+        reading = read(drawing.path) if drawing.started is not None else None
+    facts = rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
+                          drawing, reading)
+    return facts, run
+
+
+def grade_student(student: Student, rubric, out, hidden, warning=''):
+    """One student's row; their results.json and log.txt written (the picture: later)."""
+    started = time.monotonic()
+    os.makedirs(reports.folder(out, student.id), exist_ok=True)
+    work = tempfile.mkdtemp(prefix='turtle_letters_grade_')
+    try:
+        facts, run = facts_of(student, rubric, work, hidden)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    graded = rubrics.grade(facts, rubric)
+    drawn = (facts.reading.letter or '') if facts.reading else ''
+    board = leaderboard(facts, run)
+    row = reports.Row(student.id, student.name, student.expected, drawn, graded,
+                      time.monotonic() - started, board, None, warning)
+    sections = run.log if run else [('submission', facts.problem)]
+    reports.write_log(out, student.id, sections)
+    reports.write_results(os.path.join(reports.folder(out, student.id), 'results.json'), row)
+    return row, facts
+
+
+def leaderboard(facts, run):
+    d = facts.drawing
+    if d is None or d.started is None:
+        return []
+    board = [('drawing time (s)', round(d.seconds, 2), 'asc'),
+             ('cmd_vel rate (/s)', round(d.commands / max(d.seconds, 1e-6), 1), 'asc')]
+    if run and run.cpu_pct is not None:
+        board.append(('controller CPU (%)', round(run.cpu_pct, 1), 'asc'))
+    return board
+
+
+def draw_picture(out, row, facts):
+    """OUT/ID/drawing.png: the path over the letter read from it (Qt: main thread only)."""
+    reading = facts.reading
+    if reading is None or reading.best is None:
+        return row
+    from ..grading.picture import draw
+    path = os.path.join(reports.folder(out, row.id), 'drawing.png')
+    height = max(y for s in reading.best.strokes for _, y in s) - \
+        min(y for s in reading.best.strokes for _, y in s)
+    half_box = round(min(0.5, max(0.02, 1.5 * reading.best.fit * height)), 2)
+    label = f'{row.id}: {reading.best.letter}, {100 * reading.best.fit:.1f}% off'
+    draw(path, reading.best.strokes, {label: [facts.drawing.path]}, {label: (178, 24, 43)},
+         half_box)
+    return row._replace(picture=os.path.relpath(path, out))
+
+
+def say(row):
+    g = row.grade
+    print(f'{row.id} {row.name}: drew {row.drawn or "no letter"}, expected '
+          f'{row.expected or "?"}: {g.score:g}/{g.max_score:g} {g.verdict.upper()}: {g.reason}',
+          flush=True)
+
+
+def grade_all(students, rubric, out, hidden, jobs, warnings=None):
+    """Every student's row, in roster order, `jobs` at a time."""
+    warnings = warnings or {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(grade_student, s, rubric, out, hidden, warnings.get(s.id, ''))
+                   for s in students]
+        rows = []
+        for future in futures:
+            row, facts = future.result()
+            row = draw_picture(out, row, facts)
+            say(row)
+            rows.append(row)
+    return rows
+
+
+def write_class(out, rows, title):
+    reports.write_csv(os.path.join(out, 'grades.csv'), rows)
+    reports.write_junit(os.path.join(out, 'junit.xml'), rows)
+    reports.write_html(os.path.join(out, 'report.html'), rows, title)
+
+
+def grade_class(args, rubric):
+    try:
+        students, warnings = read_roster(args.roster, args.submissions)
+    except RosterError as e:
+        print(f'grade_class.py: {e}', file=sys.stderr)
+        return 2
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    for line in warnings:
+        print(f'warning: {line}', file=sys.stderr)
+    noted = {line.split(':', 1)[0]: line for line in warnings}
+    hidden = [args.submissions, args.roster, out]
+    started = time.monotonic()
+    rows = grade_all(students, rubric, out, hidden, args.jobs, noted)
+    write_class(out, rows, f'turtle_letters: {len(rows)} students graded')
+    print(f'{sum(r.grade.verdict == "pass" for r in rows)} of {len(rows)} passed in '
+          f'{(time.monotonic() - started) / 60:.1f} min; {out}/report.html', flush=True)
+    return 0
+
+
+def grade_one(args, rubric):
+    folder = os.path.abspath(args.one)
+    expected = args.letter.upper() or first_letter(args.name)
+    student = Student(os.path.basename(folder.rstrip('/')), args.name, expected, folder)
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    rows = grade_all([student], rubric, out, [out], 1)
+    write_class(out, rows, f'turtle_letters: {student.id}')
+    for test in rows[0].grade.tests:
+        print(f'  {test.name}: {test.score:g}/{test.max_score:g}: {test.output}')
+    return 0 if rows[0].grade.verdict == 'pass' else 1
+
+
+def grade_gradescope(args, rubric):
+    root = args.autograder
+    try:
+        with open(os.path.join(root, 'submission_metadata.json')) as f:
+            users = json.load(f).get('users') or [{}]
+        name = str(users[0].get('name', ''))
+    except (OSError, ValueError, AttributeError) as e:
+        print(f'grade_class.py: {root}/submission_metadata.json: {e}', file=sys.stderr)
+        return 2
+    expected = args.letter.upper() or first_letter(name)
+    student = Student('submission', name, expected, os.path.join(root, 'submission'))
+    out = tempfile.mkdtemp(prefix='turtle_letters_gradescope_')
+    rows = grade_all([student], rubric, out, [out], 1)
+    os.makedirs(os.path.join(root, 'results'), exist_ok=True)
+    reports.write_results(os.path.join(root, 'results', 'results.json'), rows[0])
+    return 0
+
+
+def main(argv=None):
+    args = arguments(sys.argv[1:] if argv is None else argv)
+    problem = sandbox.problem()
+    if problem:
+        print(f'grade_class.py: {problem}; nothing was graded', file=sys.stderr)
+        return 2
+    try:
+        rubric = rubrics.load(default_rubric(), args.rubric)
+    except rubrics.RubricError as e:
+        print(f'grade_class.py: rubric: {e}', file=sys.stderr)
+        return 2
+    if args.gradescope:
+        return grade_gradescope(args, rubric)
+    return grade_one(args, rubric) if args.one else grade_class(args, rubric)

@@ -1,0 +1,115 @@
+"""What the watcher saw of a submission's run, made sense of. No ROS here.
+
+Events are the watcher's JSON lines as dicts: 'pose', 'cmd_vel', 'chatter',
+'published' and 'graph', each with `t` (s, the grader's monotonic clock).
+Only poses from the simulator count: poses on the turtle's topic from any
+other node are made up, and a step no command could make is a teleport.
+"""
+import math
+from typing import List, NamedTuple, Optional
+
+TICK = 0.016            # s: turtlesim advances each turtle by this step, once a tick
+STEP_SLACK = 0.01       # m a step may exceed what the commanded speed allows
+SLOW_TICKS = 1.5        # ticks' worth of travel allowed between two poses, beyond those that came
+
+
+class Drawing(NamedTuple):
+    path: List[tuple]           # (x, y) of the simulator's poses, from where the turtle stood
+    started: Optional[float]    # t of the first move after the trigger
+    ended: Optional[float]      # t the turtle stopped for good (None: still moving)
+    commands: int               # cmd_vel messages from the first move to the end
+    made_up: List[str]          # nodes other than the simulator that published poses
+    teleports: List[tuple]      # (t, metres) of each step no command could make
+
+    @property
+    def seconds(self):
+        if self.started is None:
+            return 0.0
+        last = self.ended if self.ended is not None else self.started
+        return max(last - self.started, 0.0)
+
+
+def simulator(events):
+    """The simulator's node names: the servers of /spawn, as the graph reports them."""
+    names = set()
+    for e in events:
+        if e['kind'] == 'graph':
+            names.update(e['simulator'])
+    return names
+
+
+def last_graph(events):
+    return next((e for e in reversed(events) if e['kind'] == 'graph'), None)
+
+
+def poses(events, since=-math.inf):
+    return [e for e in events if e['kind'] == 'pose' and e['t'] >= since]
+
+
+def moving(pose):
+    return bool(pose['v'] or pose['w'])
+
+
+def moved(events, since, until=math.inf):
+    """Whether the simulator's turtle moved between `since` and `until`."""
+    sim = simulator(events)
+    return any(moving(p) for p in poses(events, since) if p['sender'] in sim and p['t'] < until)
+
+
+def still_since(events, since):
+    """t from which the simulator's turtle has stood still (after `since`), or None."""
+    sim = simulator(events)
+    mine = [p for p in poses(events, since) if p['sender'] in sim]
+    if not mine or moving(mine[-1]):
+        return None
+    last_move = next((p['t'] for p in reversed(mine) if moving(p)), None)
+    return last_move if last_move is not None else mine[0]['t']
+
+
+def trigger(events, since, by_grader=False):
+    """t of the first "P" on /chatter after `since`, from the cadet's nodes
+    (or from the grader's watcher, `by_grader`), or None."""
+    for e in events:
+        if e['kind'] == 'chatter' and e['t'] >= since and e['data'].strip() == 'P' \
+                and (e['sender'] == '/grade_watch') == by_grader:
+            return e['t']
+    return None
+
+
+def teleports(sim_poses):
+    """Steps longer than the commanded speed could make: turtlesim moves a
+    turtle at most its pose's speed times a tick each tick."""
+    found = []
+    for a, b in zip(sim_poses, sim_poses[1:]):
+        step = math.hypot(b['x'] - a['x'], b['y'] - a['y'])
+        ticks = max(1.0, (b['t'] - a['t']) / TICK) + SLOW_TICKS
+        if step > max(abs(a['v']), abs(b['v'])) * TICK * ticks + STEP_SLACK:
+            found.append((b['t'], step))
+    return found
+
+
+def drawing(events, since, settle, until=math.inf) -> Drawing:
+    """The drawing that follows the trigger at `since`: from the first move
+    of the simulator's turtle to when it stood still for `settle` s."""
+    sim = simulator(events)
+    made_up = sorted({p['sender'] for p in poses(events) if p['sender'] not in sim})
+    mine = [p for p in poses(events) if p['sender'] in sim and p['t'] < until]
+    before = [p for p in mine if p['t'] < since]
+    after = [p for p in mine if p['t'] >= since]
+    first = next((i for i, p in enumerate(after) if moving(p)), None)
+    if first is None:
+        return Drawing([], None, None, 0, made_up, [])
+    started = after[first]['t']
+    stood = before[-1:] + after[:first]
+    ended, last_move = None, started
+    for p in after[first:]:
+        if moving(p):
+            last_move = p['t']
+        elif p['t'] - last_move >= settle:
+            ended = last_move
+            break
+    drawn = stood[-1:] + [p for p in after[first:] if ended is None or p['t'] <= ended]
+    commands = sum(1 for e in events if e['kind'] == 'cmd_vel'
+                   and started <= e['t'] <= (ended if ended is not None else until))
+    return Drawing([(p['x'], p['y']) for p in drawn], started, ended, commands, made_up,
+                   teleports(drawn))

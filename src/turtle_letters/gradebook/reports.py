@@ -1,0 +1,133 @@
+"""What the grader hands back: per student, OUT/ID/results.json (Gradescope's
+format), drawing.png and log.txt; per class, grades.csv, junit.xml and
+report.html, a page that opens from disk. No ROS here."""
+import csv
+import html
+import json
+import os
+import re
+import urllib.parse
+import xml.etree.ElementTree as ElementTree
+from typing import List, NamedTuple, Optional
+
+from ..grading.files import safe_name
+from .rubric import Grade
+
+CSV_COLUMNS = ['id', 'name', 'expected', 'drawn', 'score', 'max_score', 'verdict', 'reason']
+HEAD, TAIL = 15, 60          # lines kept of a step's output at its start and its end
+TERMINAL_CODES = re.compile(r'\x1b\[[0-9;?]*[A-Za-z]|\x1b\][^\x07]*\x07|\r')
+
+
+class Row(NamedTuple):
+    id: str
+    name: str
+    expected: str
+    drawn: str
+    grade: Grade
+    seconds: float                  # the whole grading of this student
+    leaderboard: List[tuple]        # (name, value, order)
+    picture: Optional[str]          # drawing.png's path relative to OUT, if drawn
+    warning: str = ''
+
+    def csv(self):
+        g = self.grade
+        return [self.id, self.name, self.expected, self.drawn, f'{g.score:g}', f'{g.max_score:g}',
+                g.verdict, g.reason]
+
+
+def folder(out, student_id):
+    return os.path.join(out, safe_name(student_id))
+
+
+def trimmed(text):
+    """A step's output without terminal codes, its start and end kept."""
+    lines = TERMINAL_CODES.sub('', text).splitlines()
+    if len(lines) <= HEAD + TAIL:
+        return lines
+    return lines[:HEAD] + [f'... {len(lines) - HEAD - TAIL} lines left out ...'] + lines[-TAIL:]
+
+
+def write_log(out, student_id, sections):
+    path = os.path.join(folder(out, student_id), 'log.txt')
+    with open(path, 'w') as f:
+        for title, text in sections:
+            f.write(f'==== {title}\n' + '\n'.join(trimmed(text)) + '\n\n')
+
+
+def results_json(row: Row):
+    """Gradescope's results.json for one student."""
+    g = row.grade
+    return dict(score=g.score, execution_time=round(row.seconds, 1),
+                output=f'{g.verdict.upper()}: {g.score:g}/{g.max_score:g}. {g.reason}',
+                tests=[dict(name=t.name, score=t.score, max_score=t.max_score,
+                            status='passed' if t.score >= t.max_score else 'failed',
+                            output=t.output) for t in g.tests],
+                leaderboard=[dict(name=n, value=v, order=o) for n, v, o in row.leaderboard])
+
+
+def write_results(path, row: Row):
+    with open(path, 'w') as f:
+        json.dump(results_json(row), f, indent=1)
+
+
+def write_csv(path, rows):
+    with open(path, 'w', newline='') as f:
+        writer = csv.writer(f)
+        writer.writerow(CSV_COLUMNS)
+        writer.writerows(row.csv() for row in rows)
+
+
+def write_junit(path, rows):
+    failures = sum(row.grade.verdict != 'pass' for row in rows)
+    suite = ElementTree.Element('testsuite', name='grade_class', tests=str(len(rows)),
+                                failures=str(failures))
+    for row in rows:
+        case = ElementTree.SubElement(suite, 'testcase', classname='grade_class',
+                                      name=f'{row.id} {row.name}'.strip(),
+                                      time=f'{row.seconds:.1f}')
+        details = '\n'.join(f'{t.name}: {t.score:g}/{t.max_score:g}: {t.output}'
+                            for t in row.grade.tests)
+        if row.grade.verdict != 'pass':
+            ElementTree.SubElement(case, 'failure', message=row.grade.reason).text = details
+        ElementTree.SubElement(case, 'system-out').text = details
+    ElementTree.ElementTree(suite).write(path, encoding='utf-8', xml_declaration=True)
+
+
+def _cell(value):
+    return f'<td>{html.escape(str(value))}</td>'
+
+
+def write_html(path, rows, title):
+    table = ''.join(
+        f'<tr class="{row.grade.verdict}">' + ''.join(_cell(v) for v in row.csv()[:4]) +
+        _cell(f'{row.grade.score:g}/{row.grade.max_score:g}') + _cell(row.grade.verdict) +
+        f'<td><a href="#{html.escape(safe_name(row.id))}">{html.escape(row.grade.reason)}</a>'
+        f'</td></tr>\n' for row in rows)
+    sections = ''.join(_section(row) for row in rows)
+    with open(path, 'w') as f:
+        f.write(f'<!DOCTYPE html>\n<html><head><meta charset="utf-8"><title>{html.escape(title)}'
+                f'</title>\n<style>{STYLE}</style></head><body>\n<h1>{html.escape(title)}</h1>\n'
+                f'<table><tr><th>id</th><th>name</th><th>expected</th><th>drawn</th>'
+                f'<th>score</th><th>verdict</th><th>first thing that cost points</th></tr>\n'
+                f'{table}</table>\n{sections}</body></html>\n')
+
+
+def _section(row):
+    items = ''.join(f'<li class="{"met" if t.score >= t.max_score else "lost"}">'
+                    f'{html.escape(t.name)}: {t.score:g}/{t.max_score:g}. {html.escape(t.output)}'
+                    f'</li>' for t in row.grade.tests)
+    picture = (f'<img src="{urllib.parse.quote(row.picture)}" alt="the path over the letter">'
+               if row.picture else '<p>No drawing.</p>')
+    board = ', '.join(f'{n}: {v:g}' if isinstance(v, (int, float)) else f'{n}: {v}'
+                      for n, v, _ in row.leaderboard)
+    warning = f'<p class="lost">{html.escape(row.warning)}</p>' if row.warning else ''
+    return (f'<h2 id="{html.escape(safe_name(row.id))}">{html.escape(row.id)} '
+            f'{html.escape(row.name)}: {row.grade.score:g}/{row.grade.max_score:g}, '
+            f'{row.grade.verdict}</h2>\n{warning}<ul>{items}</ul>\n<p>{html.escape(board)}</p>'
+            f'\n{picture}\n')
+
+
+STYLE = ('body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}'
+         'td,th{border:1px solid #bbb;padding:.3em .6em;text-align:left}'
+         'tr.fail td{background:#fde8e8}tr.pass td{background:#e8f6e8}'
+         'li.lost{color:#a00}img{max-width:100%;border:1px solid #ddd}')

@@ -1,0 +1,184 @@
+"""The rubric (config/rubric.yaml, or the instructor's over it) and what a
+run earns under it: criterion by criterion, points and one line of feedback.
+No ROS here."""
+from typing import Dict, List, NamedTuple, Optional
+
+import yaml
+
+from ..grading.recognition import Reading
+from .observations import Drawing
+
+LIMITS = ('build', 'launch', 'stand', 'talker', 'start', 'drawing', 'settle')
+
+
+class RubricError(ValueError):
+    """A rubric that cannot be used; the message says which entry and why."""
+
+
+class Limits(NamedTuple):
+    """Seconds each step may take before it fails."""
+    build: float = 300.0
+    launch: float = 60.0
+    stand: float = 3.0      # the turtle is watched this long before the key is typed
+    talker: float = 5.0     # for "P" on /chatter after the key
+    start: float = 15.0     # for the turtle's first move after the trigger
+    drawing: float = 180.0
+    settle: float = 2.0     # standing still this long ends the drawing
+
+
+class Rubric(NamedTuple):
+    pass_score: float
+    points: Dict[str, float]        # criterion: points, in order
+    full: float                     # accuracy earning every point (share of the height)
+    none: float                     # ... and none
+    limits: Limits
+
+
+class Facts(NamedTuple):
+    """What happened to one submission (Step-like entries: .ok, .says; None: not reached)."""
+    expected: str
+    problem: str                    # why it could not even be built ('' if it could)
+    build: object
+    launch: object
+    waited: object
+    talker: object
+    drawing: Optional[Drawing]
+    reading: Optional[Reading]
+
+
+class Test(NamedTuple):
+    name: str
+    score: float
+    max_score: float
+    output: str
+
+
+def _number(value, where):
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or value < 0:
+        raise RubricError(f'{where}: {value!r} is not a number of 0 or more')
+    return float(value)
+
+
+def _read(path):
+    try:
+        with open(path) as f:
+            data = yaml.safe_load(f)
+    except (OSError, yaml.YAMLError) as e:
+        raise RubricError(f'{path}: {e}') from None
+    if not isinstance(data, dict):
+        raise RubricError(f'{path}: expected a mapping of rubric entries, got {data!r}')
+    return data
+
+
+def load(default_path, override_path=None) -> Rubric:
+    """The package's rubric, with the instructor's entries over it."""
+    data = _read(default_path)
+    if override_path:
+        for key, value in _read(override_path).items():
+            if key not in data:
+                raise RubricError(f'{override_path}: unknown entry {key!r} '
+                                  f'(known: {", ".join(data)})')
+            if isinstance(data[key], dict):
+                if not isinstance(value, dict):
+                    raise RubricError(f'{override_path}: {key}: expected a mapping, got {value!r}')
+                unknown = sorted(set(value) - set(data[key]))
+                if unknown:
+                    raise RubricError(f'{override_path}: {key}: unknown {", ".join(map(str, unknown))}'
+                                      f' (known: {", ".join(data[key])})')
+                value = {**data[key], **value}
+            data[key] = value
+    points = {k: _number(v, f'points: {k}') for k, v in data['points'].items()}
+    limits = Limits(**{k: _number(data['limits'][k], f'limits: {k}') for k in LIMITS})
+    full, none = (_number(data['accuracy'][k], f'accuracy: {k}') for k in ('full', 'none'))
+    if none <= full:
+        raise RubricError(f'accuracy: none ({none:g}) must be above full ({full:g})')
+    return Rubric(_number(data['pass_score'], 'pass_score'), points, full, none, limits)
+
+
+def _step(step, before):
+    """A step's share and line; not reached when `step` is None."""
+    if step is None:
+        return 0.0, f'not tried: {before}'
+    return (1.0 if step.ok else 0.0), step.says
+
+
+def _letter(facts, _):
+    reading = facts.reading
+    if reading is None or reading.best is None:
+        return 0.0, 'nothing was drawn'
+    if reading.letter is None:
+        return 0.0, (f'no letter reads from the path (closest: {reading.best.letter}, '
+                     f'{100 * reading.best.fit:.0f}% of its height off)')
+    if reading.letter != facts.expected:
+        return 0.0, f'drew {reading.letter}, expected {facts.expected}'
+    return 1.0, f'drew {reading.letter}, as expected'
+
+
+def _accuracy(facts, rubric):
+    if _letter(facts, rubric)[0] < 1:
+        return 0.0, f'not scored: {_letter(facts, rubric)[1]}'
+    fit = facts.reading.fits[facts.expected].fit
+    share = min(1.0, max(0.0, (rubric.none - fit) / (rubric.none - rubric.full)))
+    return share, (f'worst deviation {100 * fit:.1f}% of the letter\'s height (every point at '
+                   f'{100 * rubric.full:g}% or less, none from {100 * rubric.none:g}%)')
+
+
+def _ends(facts, rubric):
+    d = facts.drawing
+    if d is None or d.started is None:
+        return 0.0, 'the turtle never moved after the trigger'
+    if d.ended is None:
+        return 0.0, (f'the turtle was still moving {rubric.limits.drawing:g} s after it started: '
+                     f'the drawing never ended')
+    return 1.0, f'ended after {d.seconds:.1f} s, the turtle standing still'
+
+
+def _driven(facts, _):
+    d = facts.drawing
+    if d is None:
+        return 0.0, 'not tried: the lab did not run'
+    if d.made_up:
+        return 0.0, (f'poses of the turtle were published by {", ".join(d.made_up)}, not '
+                     f'turtlesim: those poses are not graded')
+    if d.teleports:
+        t, step = max(d.teleports, key=lambda jump: jump[1])
+        return 0.0, (f'the turtle jumped {step:.2f} m at once, farther than any command could '
+                     f'drive it ({len(d.teleports)} such jumps): a teleport')
+    if d.started is not None and d.commands == 0:
+        return 0.0, 'the turtle moved, but no command came on cmd_vel'
+    if d.started is None:
+        return 0.0, 'the turtle never moved'
+    return 1.0, f'driven over cmd_vel: {d.commands} commands'
+
+
+CRITERIA = {
+    'builds': ('It builds', lambda f, r: _step(f.build, f.problem)),
+    'launches': ('It launches', lambda f, r: _step(f.launch, 'the build failed')),
+    'talker': ('The talker publishes P on a key press', lambda f, r: _step(f.talker, 'the launch failed')),
+    'waits': ('The turtle waits for the trigger', lambda f, r: _step(f.waited, 'the launch failed')),
+    'letter': ('The letter drawn is the expected one', _letter),
+    'accuracy': ('Its accuracy', _accuracy),
+    'ends': ('The drawing ends, the turtle standing still', _ends),
+    'driven': ('The turtle was driven over cmd_vel', _driven),
+}
+
+
+class Grade(NamedTuple):
+    tests: List[Test]
+    score: float
+    max_score: float
+    verdict: str            # pass or fail
+    reason: str             # the first thing that cost points, or what it achieved
+
+
+def grade(facts: Facts, rubric: Rubric) -> Grade:
+    tests = []
+    for name, points in rubric.points.items():
+        title, judge = CRITERIA[name]
+        share, line = judge(facts, rubric)
+        tests.append(Test(title, round(share * points, 2), points, line))
+    score = round(sum(t.score for t in tests), 2)
+    total = sum(t.max_score for t in tests)
+    lost = next((t for t in tests if t.score < t.max_score), None)
+    reason = f'{lost.name}: {lost.output}' if lost else 'every criterion met'
+    return Grade(tests, score, total, 'pass' if score >= rubric.pass_score else 'fail', reason)

@@ -1,0 +1,327 @@
+"""One submission run as the lab runs it, in its sandbox: the package built
+in a workspace of its own over this one, its launch file started with
+roslaunch in a pseudo-terminal, P and Enter typed for its talker, and the
+drawing watched until the turtle stands still. What happened is a Run,
+for the rubric to score; nothing here decides points.
+"""
+import json
+import os
+import pty
+import re
+import signal
+import subprocess
+import threading
+import time
+from typing import NamedTuple
+
+from . import observations as seen
+from ..grading.procstat import cpu_seconds
+from .rubric import Limits
+from .sandbox import Sandbox
+from .submission import Package, copy
+
+WATCHER = '/grade_watch'
+POLL = 0.1                  # s between looks at what the watcher saw
+LOG_LINES = 60              # lines kept of each step's output in log.txt
+ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
+                 'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
+                 'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
+ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
+
+
+class Step(NamedTuple):
+    ok: bool
+    says: str               # one line: what happened, or why it failed
+    seconds: float = 0.0
+
+
+class Run:
+    """What happened to one submission, step by step (None: not reached)."""
+
+    def __init__(self, package: Package):
+        self.package = package
+        self.build = self.launch = self.waited = self.talker = None
+        self.events, self.trigger, self.cpu_pct = [], None, None
+        self.since = None       # t from which the drawing is looked for
+        self.log = []           # (title, lines)
+        self.finished = None    # t the run stopped watching
+
+
+def _env(work):
+    env = {name: os.environ[name] for name in ROS_VARIABLES if name in os.environ}
+    env.update(HOME=os.path.join(work, 'home'), ROS_HOME=os.path.join(work, 'home', '.ros'),
+               PATH=f"{os.path.join(work, 'bin')}:/usr/bin:/bin:{os.environ.get('PATH', '')}",
+               ROS_MASTER_URI='http://127.0.0.1:11311', ROS_IP='127.0.0.1',
+               QT_QPA_PLATFORM='offscreen', LANG='C.UTF-8', TERM='xterm', PYTHONUNBUFFERED='1')
+    return env
+
+
+def prepare(package, work):
+    """The work folder: the package's copy in a workspace, a home, and
+    `python` for scripts that say `#!/usr/bin/env python` (Noetic's is python3)."""
+    for folder in ('ws/src', 'home', 'bin'):
+        os.makedirs(os.path.join(work, folder), exist_ok=True)
+    copy(package, os.path.join(work, 'ws'))
+    os.symlink('/usr/bin/python3', os.path.join(work, 'bin', 'python'))
+
+
+def build(box, work, limits):
+    command = ['bash', '-c', 'cd ws && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3']
+    started = time.monotonic()
+    try:
+        done = subprocess.run(box.inside(command, _env(work)), stdout=subprocess.PIPE,
+                              stderr=subprocess.STDOUT, timeout=limits.build)
+    except subprocess.TimeoutExpired as e:
+        return Step(False, f'the build did not end within {limits.build:g} s'), _text(e.output)
+    output = _text(done.stdout)
+    if done.returncode != 0:
+        first = next((line.strip() for line in output.splitlines()
+                      if 'error' in line.lower() and 'Error ' not in line), 'see log.txt')
+        return Step(False, f'catkin_make failed: {first}', time.monotonic() - started), output
+    return Step(True, f'built in {time.monotonic() - started:.1f} s',
+                time.monotonic() - started), output
+
+
+def _text(data):
+    return (data or b'').decode('utf-8', 'replace')
+
+
+class Terminal:
+    """roslaunch with a pseudo-terminal for its stdin and output, as in a
+    terminal window; what it prints is kept."""
+
+    def __init__(self, argv):
+        self.master, slave = pty.openpty()
+        self.process = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave,
+                                        start_new_session=True)
+        os.close(slave)
+        self.output = bytearray()
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        while True:
+            try:
+                data = os.read(self.master, 4096)
+            except OSError:
+                return
+            if not data:
+                return
+            self.output += data
+
+    def type(self, keys):
+        os.write(self.master, keys)
+
+    def text(self):
+        return bytes(self.output).decode('utf-8', 'replace').replace('\r\n', '\n')
+
+    def stop(self):
+        if self.process.poll() is None:
+            self.process.send_signal(signal.SIGKILL)
+        self.process.wait()
+        os.close(self.master)
+
+
+class Watcher:
+    """watch.py in the submission's network namespace: its events, as they come."""
+
+    def __init__(self, box):
+        env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:11311', ROS_IP='127.0.0.1',
+                   PYTHONUNBUFFERED='1')
+        self.process = subprocess.Popen(
+            box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env)
+        self.events = []
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        for line in self.process.stdout:
+            try:
+                self.events.append(json.loads(line))
+            except ValueError:
+                continue
+
+    def publish_p(self):
+        self.process.stdin.write(b'P\n')
+        self.process.stdin.flush()
+
+    def stop(self):
+        self.process.kill()
+        self.process.wait()
+
+
+def wait_until(condition, seconds, alive=lambda: True):
+    """Polls `condition` until it holds (True), `seconds` pass or `alive()` fails."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline and alive():
+        if condition():
+            return True
+        time.sleep(POLL)
+    return bool(condition())
+
+
+def why_not_launched(output, events):
+    """Why the lab's graph did not come up, in one line."""
+    refused = [line for line in output.splitlines() if line.startswith('ERROR: cannot launch')]
+    graph = seen.last_graph(events)
+    if refused:
+        return refused[0][len('ERROR: '):]
+    if graph is None:
+        return last_error(output) or 'no ROS master came up'
+    if not graph['simulator']:
+        return 'turtlesim did not start'
+    return 'no node subscribed to /chatter: is the controller started by the launch file?'
+
+
+def last_error(*texts):
+    """The last line that reads as an error (a Python exception's, or roslaunch's)."""
+    lines = [line.strip() for text in texts for line in text.splitlines()
+             if ERROR_LINE.match(line)]
+    return lines[-1] if lines else ''
+
+
+def node_logs(work, node=''):
+    """The text of the log files of every node (or of `node`) in the sandbox's home."""
+    texts, top = [], os.path.join(work, 'home', '.ros', 'log')
+    for folder, _, files in os.walk(top):
+        for name in sorted(files):
+            path = os.path.join(folder, name)
+            if name.endswith('.log') and not os.path.islink(path) \
+                    and not name.startswith(('master', 'roslaunch', 'rosout')) \
+                    and name.startswith(node):
+                with open(path, errors='replace') as f:
+                    texts.append(f.read()[-20000:])
+    return '\n'.join(texts)
+
+
+def talker_failure(output, work):
+    """Why the talker said nothing: the last error line of the first node
+    roslaunch saw die (from its log, else from the terminal before it died),
+    else the last error line anywhere."""
+    died = re.search(r'^\[(\S+?)(-\d+)?\] process has died', output, re.MULTILINE)
+    if died:
+        node = died.group(1)
+        return (last_error(node_logs(work, node)) or last_error(output[:died.start()])
+                or f'{node} died')
+    return last_error(output, node_logs(work))
+
+
+def controller_processes(root, node):
+    """pids of the processes under `root` that roslaunch started as `node`."""
+    wanted, found = f'__name:={node.rsplit("/", 1)[-1]}'.encode(), []
+    for pid in filter(str.isdigit, os.listdir('/proc')):
+        try:
+            with open(f'/proc/{pid}/cmdline', 'rb') as f:
+                if wanted in f.read().split(b'\0'):
+                    found.append(int(pid))
+        except OSError:
+            continue
+    return [pid for pid in found if _descends(pid, root)]
+
+
+def _descends(pid, root):
+    while pid > 1:
+        if pid == root:
+            return True
+        try:
+            with open(f'/proc/{pid}/stat') as f:
+                pid = int(f.read().rsplit(')', 1)[1].split()[1])
+        except OSError:
+            return False
+    return False
+
+
+class ControllerCpu:
+    """The CPU time of the node that publishes cmd_vel, from the trigger on."""
+
+    def __init__(self, root, events):
+        graph = seen.last_graph(events)
+        names = graph['cmd_vel_publishers'] if graph else []
+        self.pids = controller_processes(root, names[0]) if len(names) == 1 else []
+        self.started, self.used = time.monotonic(), self._used()
+
+    def _used(self):
+        total = 0.0
+        for pid in self.pids:
+            try:
+                total += cpu_seconds(pid)
+            except OSError:
+                pass
+        return total
+
+    def share(self):
+        """% of a core since the trigger, or None when no one node publishes cmd_vel."""
+        if not self.pids:
+            return None
+        return 100 * (self._used() - self.used) / max(time.monotonic() - self.started, 1e-6)
+
+
+def run(package: Package, work, limits: Limits, hidden=()) -> Run:
+    """Build, launch, type P, watch: the whole run of one submission."""
+    result = Run(package)
+    prepare(package, work)
+    with Sandbox(work, hidden) as box:
+        result.build, output = build(box, work, limits)
+        result.log.append(('catkin_make', output))
+        if result.build.ok:
+            _launch_and_watch(box, work, limits, result)
+    return result
+
+
+def _launch_and_watch(box, work, limits, result):
+    launch = os.path.basename(result.package.launch)
+    command = ['bash', '-c', 'source ws/devel/setup.bash && exec roslaunch "$0" "$1"',
+               result.package.name, launch]
+    terminal, watcher = Terminal(box.inside(command, _env(work))), Watcher(box)
+    try:
+        _watch(terminal, watcher, limits, result, work)
+    finally:
+        result.finished = time.monotonic()
+        terminal.stop()
+        watcher.stop()
+        result.events = list(watcher.events)
+        result.log.append((f'roslaunch {result.package.name} {launch}', terminal.text()))
+
+
+def _watch(terminal, watcher, limits, result, work):
+    events, alive = watcher.events, lambda: terminal.process.poll() is None
+    started = time.monotonic()
+    if not wait_until(lambda: _lab_up(events), limits.launch, alive):
+        result.launch = Step(False, why_not_launched(terminal.text(), events))
+        return
+    up = time.monotonic()
+    listeners = ', '.join(seen.last_graph(events)['chatter_subscribers'])
+    result.launch = Step(True, f'turtlesim up, {listeners} listening on /chatter, in '
+                               f'{up - started:.1f} s', up - started)
+    wait_until(lambda: False, limits.stand, alive)
+    moved = seen.moved(events, up)
+    result.waited = Step(not moved, 'the turtle moved before the trigger' if moved else
+                         f'the turtle stood still for {limits.stand:g} s until the trigger')
+    cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
+    terminal.type(b'P')
+    time.sleep(0.2)
+    terminal.type(b'\r')
+    if wait_until(lambda: seen.trigger(events, typed) is not None, limits.talker, alive):
+        result.trigger = seen.trigger(events, typed)
+        result.talker = Step(True, f'"P" on /chatter {result.trigger - typed:.1f} s after the key')
+    else:
+        why = talker_failure(terminal.text(), work)
+        result.talker = Step(False, f'nothing on /chatter within {limits.talker:g} s of P and '
+                                    f'Enter' + (f': {why}' if why else ''))
+        watcher.publish_p()
+        wait_until(lambda: seen.trigger(events, typed, by_grader=True) is not None, 5.0)
+        result.trigger = seen.trigger(events, typed, by_grader=True) or time.monotonic()
+    since = result.since = up if moved else result.trigger
+    if wait_until(lambda: seen.moved(events, since), limits.start, alive):
+        wait_until(lambda: _stood(events, since, limits.settle), limits.drawing, alive)
+    result.cpu_pct = cpu.share()
+
+
+def _lab_up(events):
+    graph = seen.last_graph(events)
+    return bool(graph and graph['simulator'] and graph['chatter_subscribers']
+                and seen.poses(events))
+
+
+def _stood(events, since, settle):
+    still = seen.still_since(events, since)
+    return still is not None and time.monotonic() - still >= settle

@@ -1,0 +1,87 @@
+"""The grader's eyes in a submission's network namespace: a node of ours,
+run outside the sandbox, that reports as JSON lines on stdout every pose,
+command and /chatter message (with the time it came and the node that sent
+it) and, twice a second, who publishes and serves what. A line "P" on
+stdin publishes "P" on /chatter. Run as `python3 -m turtle_letters.gradebook.watch`."""
+import json
+import sys
+import threading
+import time
+
+import rosgraph
+import rospy
+from geometry_msgs.msg import Twist
+from std_msgs.msg import String
+from turtlesim.msg import Pose
+
+NAME = '/grade_watch'
+GRAPH_PERIOD = 0.5      # s between reports of the graph
+
+
+class Reporter:
+    """One JSON line per event, whole, whichever thread reports it."""
+
+    def __init__(self, out=sys.stdout):
+        self.out, self.lock = out, threading.Lock()
+
+    def __call__(self, kind, **fields):
+        line = json.dumps(dict(kind=kind, t=time.monotonic(), **fields))
+        with self.lock:
+            self.out.write(line + '\n')
+            self.out.flush()
+
+
+def sender(msg):
+    return msg._connection_header.get('callerid', '?')
+
+
+def graph(master):
+    """Who publishes the turtle's topics, who listens on /chatter, who serves /spawn."""
+    publishers, subscribers, services = master.getSystemState()
+    published, subscribed = dict(publishers), dict(subscribers)
+    return dict(pose_publishers=published.get('/turtle1/pose', []),
+                cmd_vel_publishers=[n for n in published.get('/turtle1/cmd_vel', []) if n != NAME],
+                chatter_publishers=[n for n in published.get('/chatter', []) if n != NAME],
+                chatter_subscribers=[n for n in subscribed.get('/chatter', []) if n != NAME],
+                simulator=dict(services).get('/spawn', []))
+
+
+def wait_for_master(master):
+    while True:
+        try:
+            return master.getPid()
+        except OSError:
+            time.sleep(0.1)
+
+
+def main():
+    report = Reporter()
+    master = rosgraph.Master(NAME)
+    wait_for_master(master)
+    rospy.init_node(NAME[1:], disable_signals=True, disable_rosout=True)
+    rospy.Subscriber('/turtle1/pose', Pose, lambda m: report(
+        'pose', x=m.x, y=m.y, theta=m.theta, v=m.linear_velocity, w=m.angular_velocity,
+        sender=sender(m)), queue_size=1000)
+    rospy.Subscriber('/turtle1/cmd_vel', Twist, lambda m: report(
+        'cmd_vel', v=m.linear.x, vy=m.linear.y, w=m.angular.z, sender=sender(m)), queue_size=1000)
+    rospy.Subscriber('/chatter', String, lambda m: report(
+        'chatter', data=m.data[:80], sender=sender(m)), queue_size=100)
+    chatter = rospy.Publisher('/chatter', String, queue_size=1, latch=True)
+    threading.Thread(target=_obey, args=(chatter, report), daemon=True).start()
+    while not rospy.is_shutdown():
+        try:
+            report('graph', **graph(master))
+        except OSError as e:
+            report('graph_error', error=str(e))
+        time.sleep(GRAPH_PERIOD)
+
+
+def _obey(chatter, report):
+    for line in sys.stdin:
+        if line.strip() == 'P':
+            chatter.publish(String('P'))
+            report('published', data='P')
+
+
+if __name__ == '__main__':
+    main()
