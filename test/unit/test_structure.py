@@ -21,10 +21,13 @@ LAYERS = [
     {'classroom'},                      # many students on one turtlesim
     {'turtle', 'actions', 'grading'},   # the lab's turtle; requests; scoring
     {'controller', 'talker'},           # the lab's nodes
+    {'gradebook'},                      # the instructor's: a class graded as handed in
 ]
 PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors', 'motion.control',
         'classroom.names',
         'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
+        'grading.recognition', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',
+        'gradebook.reports', 'gradebook.submission', 'grading.files',
         'grading.procstat', 'actions.jobs', 'actions.progress'}
 ROS = ('rospy', 'rosgraph', 'actionlib', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')
 

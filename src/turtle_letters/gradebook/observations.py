@@ -11,6 +11,7 @@ from typing import List, NamedTuple, Optional
 TICK = 0.016            # s: turtlesim advances each turtle by this step, once a tick
 STEP_SLACK = 0.01       # m a step may exceed what the commanded speed allows
 SLOW_TICKS = 1.5        # ticks' worth of travel allowed between two poses, beyond those that came
+JUMP = 0.001            # m between two poses that is a move, speed or no speed
 
 
 class Drawing(NamedTuple):
@@ -46,24 +47,35 @@ def poses(events, since=-math.inf):
     return [e for e in events if e['kind'] == 'pose' and e['t'] >= since]
 
 
-def moving(pose):
-    return bool(pose['v'] or pose['w'])
+def marked(sim_poses):
+    """(pose, moving) for each pose: moving when it has a speed, or when it
+    stands elsewhere than the pose before (a teleport has no speed)."""
+    marks, before = [], None
+    for p in sim_poses:
+        jumped = before is not None and (abs(p['x'] - before['x']) > JUMP or
+                                         abs(p['y'] - before['y']) > JUMP)
+        marks.append((p, bool(p['v'] or p['w'] or jumped)))
+        before = p
+    return marks
+
+
+def simulator_poses(events, since=-math.inf, until=math.inf):
+    sim = simulator(events)
+    return [p for p in poses(events, since) if p['sender'] in sim and p['t'] < until]
 
 
 def moved(events, since, until=math.inf):
     """Whether the simulator's turtle moved between `since` and `until`."""
-    sim = simulator(events)
-    return any(moving(p) for p in poses(events, since) if p['sender'] in sim and p['t'] < until)
+    return any(m for _, m in marked(simulator_poses(events, since, until))[1:])
 
 
 def still_since(events, since):
     """t from which the simulator's turtle has stood still (after `since`), or None."""
-    sim = simulator(events)
-    mine = [p for p in poses(events, since) if p['sender'] in sim]
-    if not mine or moving(mine[-1]):
+    marks = marked(simulator_poses(events, since))
+    if not marks or marks[-1][1]:
         return None
-    last_move = next((p['t'] for p in reversed(mine) if moving(p)), None)
-    return last_move if last_move is not None else mine[0]['t']
+    last_move = next((p['t'] for p, m in reversed(marks[1:]) if m), None)
+    return last_move if last_move is not None else marks[0][0]['t']
 
 
 def trigger(events, since, by_grader=False):
@@ -93,22 +105,21 @@ def drawing(events, since, settle, until=math.inf) -> Drawing:
     of the simulator's turtle to when it stood still for `settle` s."""
     sim = simulator(events)
     made_up = sorted({p['sender'] for p in poses(events) if p['sender'] not in sim})
-    mine = [p for p in poses(events) if p['sender'] in sim and p['t'] < until]
-    before = [p for p in mine if p['t'] < since]
-    after = [p for p in mine if p['t'] >= since]
-    first = next((i for i, p in enumerate(after) if moving(p)), None)
+    marks = marked(simulator_poses(events, until=until))
+    first = next((i for i, (p, m) in enumerate(marks) if m and p['t'] >= since and i), None)
     if first is None:
         return Drawing([], None, None, 0, made_up, [])
-    started = after[first]['t']
-    stood = before[-1:] + after[:first]
-    ended, last_move = None, started
-    for p in after[first:]:
-        if moving(p):
-            last_move = p['t']
-        elif p['t'] - last_move >= settle:
-            ended = last_move
+    last_move, end = first, None
+    for i in range(first, len(marks)):
+        pose, move = marks[i]
+        if move:
+            last_move = i
+        elif pose['t'] - marks[last_move][0]['t'] >= settle:
+            end = last_move
             break
-    drawn = stood[-1:] + [p for p in after[first:] if ended is None or p['t'] <= ended]
+    drawn = [p for p, _ in marks[first - 1:(end if end is not None else len(marks) - 1) + 1]]
+    started = marks[first][0]['t']
+    ended = marks[end][0]['t'] if end is not None else None
     commands = sum(1 for e in events if e['kind'] == 'cmd_vel'
                    and started <= e['t'] <= (ended if ended is not None else until))
     return Drawing([(p['x'], p['y']) for p in drawn], started, ended, commands, made_up,

@@ -39,9 +39,14 @@ def folder(out, student_id):
     return os.path.join(out, safe_name(student_id))
 
 
+def plain(text):
+    """Text a terminal showed, without its colour and title codes."""
+    return TERMINAL_CODES.sub('', text)
+
+
 def trimmed(text):
     """A step's output without terminal codes, its start and end kept."""
-    lines = TERMINAL_CODES.sub('', text).splitlines()
+    lines = plain(text).splitlines()
     if len(lines) <= HEAD + TAIL:
         return lines
     return lines[:HEAD] + [f'... {len(lines) - HEAD - TAIL} lines left out ...'] + lines[-TAIL:]

@@ -19,9 +19,11 @@ class Student(NamedTuple):
 
 
 def first_letter(name):
-    """The first letter of `name` as A-Z ('Émile' gives E), or ''."""
-    plain = unicodedata.normalize('NFKD', name).encode('ascii', 'ignore').decode()
-    return next((c.upper() for c in plain if c in string.ascii_letters), '')
+    """The first letter of `name` as A-Z ('Émile' gives E), or '' when it
+    is none of them ('Øystein', '李')."""
+    first = next((c for c in name if c.isalpha()), '')
+    plain = unicodedata.normalize('NFKD', first)[:1].upper()
+    return plain if plain in string.ascii_uppercase and plain else ''
 
 
 def _expected(row, where):
@@ -56,8 +58,11 @@ def read(roster_path, submissions) -> Tuple[List[Student], List[str]]:
         seen.add(sid)
         folder = os.path.join(submissions, sid) if sid in folders else None
         name = (row['name'] or '').strip()
-        students.append(Student(sid, name, _expected(row, f'{roster_path}, line {number}'),
-                                folder))
+        expected = _expected(row, f'{roster_path}, line {number}')
+        if not expected:
+            warnings.append(f'{sid}: the name {name!r} starts with no letter of A-Z: give the '
+                            f'letter in the roster\'s letter column')
+        students.append(Student(sid, name, expected, folder))
     for extra in folders:
         if extra not in seen:
             warnings.append(f'{extra}: a submission the roster lacks: graded, with no name '

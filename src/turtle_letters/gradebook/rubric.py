@@ -28,6 +28,7 @@ class Limits(NamedTuple):
 
 class Rubric(NamedTuple):
     pass_score: float
+    required: List[str]             # criteria a pass needs every point of
     points: Dict[str, float]        # criterion: points, in order
     full: float                     # accuracy earning every point (share of the height)
     none: float                     # ... and none
@@ -46,7 +47,7 @@ class Facts(NamedTuple):
     reading: Optional[Reading]
 
 
-class Test(NamedTuple):
+class Mark(NamedTuple):
     name: str
     score: float
     max_score: float
@@ -92,7 +93,12 @@ def load(default_path, override_path=None) -> Rubric:
     full, none = (_number(data['accuracy'][k], f'accuracy: {k}') for k in ('full', 'none'))
     if none <= full:
         raise RubricError(f'accuracy: none ({none:g}) must be above full ({full:g})')
-    return Rubric(_number(data['pass_score'], 'pass_score'), points, full, none, limits)
+    required = data['required']
+    if not isinstance(required, list) or not set(required) <= set(points):
+        raise RubricError(f'required: {required!r} is not a list of criteria '
+                          f'({", ".join(points)})')
+    return Rubric(_number(data['pass_score'], 'pass_score'), required, points, full, none,
+                  limits)
 
 
 def _step(step, before):
@@ -109,6 +115,9 @@ def _letter(facts, _):
     if reading.letter is None:
         return 0.0, (f'no letter reads from the path (closest: {reading.best.letter}, '
                      f'{100 * reading.best.fit:.0f}% of its height off)')
+    if not facts.expected:
+        return 0.0, (f'drew {reading.letter}, but no letter is expected: give it in the '
+                     f'roster (its letter column, or a name)')
     if reading.letter != facts.expected:
         return 0.0, f'drew {reading.letter}, expected {facts.expected}'
     return 1.0, f'drew {reading.letter}, as expected'
@@ -164,7 +173,7 @@ CRITERIA = {
 
 
 class Grade(NamedTuple):
-    tests: List[Test]
+    tests: List[Mark]
     score: float
     max_score: float
     verdict: str            # pass or fail
@@ -176,9 +185,12 @@ def grade(facts: Facts, rubric: Rubric) -> Grade:
     for name, points in rubric.points.items():
         title, judge = CRITERIA[name]
         share, line = judge(facts, rubric)
-        tests.append(Test(title, round(share * points, 2), points, line))
+        tests.append(Mark(title, round(share * points, 2), points, line))
     score = round(sum(t.score for t in tests), 2)
     total = sum(t.max_score for t in tests)
     lost = next((t for t in tests if t.score < t.max_score), None)
     reason = f'{lost.name}: {lost.output}' if lost else 'every criterion met'
-    return Grade(tests, score, total, 'pass' if score >= rubric.pass_score else 'fail', reason)
+    missed = [t for name, t in zip(rubric.points, tests)
+              if name in rubric.required and t.score < t.max_score]
+    passed = score >= rubric.pass_score and not missed
+    return Grade(tests, score, total, 'pass' if passed else 'fail', reason)

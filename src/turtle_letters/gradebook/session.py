@@ -16,6 +16,7 @@ from typing import NamedTuple
 
 from . import observations as seen
 from ..grading.procstat import cpu_seconds
+from .reports import plain
 from .rubric import Limits
 from .sandbox import Sandbox
 from .submission import Package, copy
@@ -112,7 +113,8 @@ class Terminal:
         os.write(self.master, keys)
 
     def text(self):
-        return bytes(self.output).decode('utf-8', 'replace').replace('\r\n', '\n')
+        """What the terminal showed, as plain lines."""
+        return plain(bytes(self.output).decode('utf-8', 'replace'))
 
     def stop(self):
         if self.process.poll() is None:

@@ -1,0 +1,73 @@
+"""What the watcher saw, made sense of: when a drawing starts and ends,
+which poses count, and which steps no command could make."""
+import pytest
+
+from turtle_letters.gradebook.observations import TICK, drawing, moved, still_since, trigger
+
+SIM = '/turtlesim'
+
+
+def graph(t=0.0):
+    return dict(kind='graph', t=t, simulator=[SIM])
+
+
+def pose(t, x, y, v=0.0, w=0.0, sender=SIM):
+    return dict(kind='pose', t=t, x=x, y=y, theta=0.0, v=v, w=w, sender=sender)
+
+
+def line(t0, x0, x1, speed=1.0):
+    """Poses one tick apart, driving along x at `speed` from x0 to x1."""
+    n = round(abs(x1 - x0) / (speed * TICK))
+    return [pose(t0 + i * TICK, x0 + (x1 - x0) * i / n, 5.0, v=speed) for i in range(1, n + 1)]
+
+
+def standing(t0, seconds, x):
+    return [pose(t0 + i * TICK, x, 5.0) for i in range(int(seconds / TICK))]
+
+
+def test_a_drawing_runs_from_the_first_move_after_the_trigger_to_standing_still():
+    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0) + standing(2.01, 3, 6.0)
+    d = drawing(events, since=0.5, settle=2.0)
+    assert d.started == pytest.approx(1 + TICK)
+    assert d.ended == pytest.approx(1 + TICK * len(line(1, 5.0, 6.0)))
+    assert d.path[0] == (5.0, 5.0) and d.path[-1] == pytest.approx((6.0, 5.0))
+    assert not d.teleports and not d.made_up
+
+
+def test_a_turtle_still_moving_has_not_ended():
+    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 8.0)
+    assert drawing(events, since=0.5, settle=2.0).ended is None
+    assert still_since(events, 0.5) is None
+    assert moved(events, 0.5)
+
+
+def test_a_teleport_moves_the_turtle_but_no_command_could():
+    jump = [pose(1.0 + TICK, 7.0, 5.0)]         # 2 m in a tick, at no speed
+    events = [graph()] + standing(0, 1, 5.0) + jump + standing(1.1, 3, 7.0)
+    d = drawing(events, since=0.5, settle=2.0)
+    assert d.started is not None
+    assert [round(m, 2) for _, m in d.teleports] == [2.0]
+
+
+def test_a_late_pose_is_no_teleport():
+    # two poses 0.1 s apart, at 1 m/s: the ticks between them were not seen
+    events = [graph(), pose(0.0, 5.0, 5.0), pose(1.0, 5.0, 5.0), pose(1.016, 5.016, 5.0, v=1),
+              pose(1.116, 5.116, 5.0, v=1), pose(1.132, 5.132, 5.0, v=1)]
+    assert drawing(events, since=0.5, settle=2.0).teleports == []
+
+
+def test_poses_from_any_node_but_the_simulator_are_made_up_and_not_drawn():
+    fake = [pose(1 + i * TICK, 5.0 + i * 0.016, 5.0, v=1.0, sender='/f_drawer') for i in range(60)]
+    events = [graph()] + standing(0, 3, 5.0) + fake
+    d = drawing(events, since=0.5, settle=2.0)
+    assert d.made_up == ['/f_drawer']
+    assert d.started is None and d.path == []
+
+
+def test_the_trigger_is_the_cadets_p_unless_the_grader_sent_it():
+    events = [dict(kind='chatter', t=1.0, data='P', sender='/grade_watch'),
+              dict(kind='chatter', t=2.0, data='p', sender='/talker'),
+              dict(kind='chatter', t=3.0, data='P\n', sender='/talker')]
+    assert trigger(events, 0.0) == 3.0
+    assert trigger(events, 0.0, by_grader=True) == 1.0
+    assert trigger(events, 3.5) is None

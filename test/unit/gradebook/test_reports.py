@@ -1,0 +1,50 @@
+"""What the grader hands back: Gradescope's results.json, the CSV, junit
+and the report page, each from the same rows."""
+import csv
+import json
+import xml.etree.ElementTree as ElementTree
+
+from turtle_letters.gradebook import reports
+from turtle_letters.gradebook.rubric import Grade, Mark
+
+PASSED = Grade([Mark('It builds', 10, 10, 'built'), Mark('Its accuracy', 15, 20, '7% off')],
+               25, 30, 'pass', 'Its accuracy: 7% off')
+FAILED = Grade([Mark('It builds', 0, 10, 'catkin_make failed: <x> & "y"')], 0, 10, 'fail',
+               'It builds: catkin_make failed: <x> & "y"')
+ROWS = [reports.Row('a/1', 'Ann', 'A', 'A', PASSED, 12.0, [('drawing time (s)', 9.5, 'asc')],
+                    'a%2F1/drawing.png'),
+        reports.Row('b2', 'Bob <b>', 'B', '', FAILED, 3.0, [], None, 'not on the roster')]
+
+
+def test_results_json_is_gradescopes_format():
+    data = reports.results_json(ROWS[0])
+    assert data['score'] == 25 and data['execution_time'] == 12.0
+    assert [(t['name'], t['status']) for t in data['tests']] == [
+        ('It builds', 'passed'), ('Its accuracy', 'failed')]
+    assert data['leaderboard'] == [dict(name='drawing time (s)', value=9.5, order='asc')]
+    assert data['output'].startswith('PASS: 25/30.')
+
+
+def test_csv_junit_and_page_hold_every_row(tmp_path):
+    reports.write_csv(str(tmp_path / 'grades.csv'), ROWS)
+    reports.write_junit(str(tmp_path / 'junit.xml'), ROWS)
+    reports.write_html(str(tmp_path / 'report.html'), ROWS, 'class')
+    with open(tmp_path / 'grades.csv') as f:
+        rows = list(csv.reader(f))
+    assert rows[0] == reports.CSV_COLUMNS
+    assert rows[2] == ['b2', 'Bob <b>', 'B', '', '0', '10', 'fail',
+                       'It builds: catkin_make failed: <x> & "y"']
+    suite = ElementTree.parse(str(tmp_path / 'junit.xml')).getroot()
+    assert suite.get('tests') == '2' and suite.get('failures') == '1'
+    assert suite.findall('testcase')[1].find('failure').get('message') == FAILED.reason
+    page = (tmp_path / 'report.html').read_text()
+    assert 'Bob &lt;b&gt;' in page and '<b>' not in page.replace('<body>', '')
+    assert 'src="a%252F1/drawing.png"' in page and 'No drawing.' in page
+
+
+def test_long_output_keeps_its_start_and_end_without_terminal_codes():
+    text = '\x1b[31mERROR\x1b[0m\r\n' + '\n'.join(f'line {i}' for i in range(500))
+    lines = reports.trimmed(text)
+    assert lines[0] == 'ERROR' and lines[-1] == 'line 499'
+    assert any('lines left out' in line for line in lines)
+    assert len(lines) == reports.HEAD + reports.TAIL + 1

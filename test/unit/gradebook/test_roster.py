@@ -1,0 +1,44 @@
+"""The roster against the submissions folder."""
+import pytest
+
+from turtle_letters.gradebook.roster import RosterError, first_letter, read
+
+
+def setup_class(tmp_path, roster_text, folders):
+    for name in folders:
+        (tmp_path / 'subs' / name).mkdir(parents=True)
+    (tmp_path / 'subs').mkdir(exist_ok=True)
+    (tmp_path / 'roster.csv').write_text(roster_text, encoding='utf-8')
+    return str(tmp_path / 'roster.csv'), str(tmp_path / 'subs')
+
+
+def test_roster_order_the_expected_letter_and_the_folders_it_lacks(tmp_path):
+    roster, subs = setup_class(tmp_path, 'id,name,letter\nb2,Émile Zola,\na1,Kofi,x\nc3,Ann,\n',
+                               ['a1', 'b2', 'late'])
+    students, warnings = read(roster, subs)
+    assert [(s.id, s.expected, s.folder is not None) for s in students] == [
+        ('b2', 'E', True), ('a1', 'X', True), ('c3', 'A', False), ('late', '', True)]
+    assert warnings == ['late: a submission the roster lacks: graded, with no name and no '
+                        'expected letter']
+
+
+@pytest.mark.parametrize('text, says', [
+    ('student,name\na,b\n', 'header with id,name'),
+    ('id,name\n', 'header with id,name'),
+    ('id,name\na,Ann\na,Bob\n', "id 'a' given twice"),
+    ('id,name,letter\na,Ann,AB\n', "letter 'AB' is not one letter"),
+])
+def test_a_roster_that_cannot_be_used(tmp_path, text, says):
+    roster, subs = setup_class(tmp_path, text, [])
+    with pytest.raises(RosterError, match=says):
+        read(roster, subs)
+
+
+def test_a_missing_roster(tmp_path):
+    with pytest.raises(RosterError, match='No such file'):
+        read(str(tmp_path / 'none.csv'), str(tmp_path))
+
+
+def test_first_letters():
+    assert [first_letter(n) for n in ('nadia', ' Øystein', '3 Zoë', '李', '')] == \
+        ['N', '', 'Z', '', '']

@@ -1,0 +1,112 @@
+"""The rubric: the package's defaults, an instructor's file over them, and
+what each kind of run earns under it, criterion by criterion."""
+import os
+
+import pytest
+
+from turtle_letters.gradebook.observations import Drawing
+from turtle_letters.gradebook.rubric import CRITERIA, Facts, RubricError, grade, load
+from turtle_letters.gradebook.session import Step
+from turtle_letters.grading.recognition import read
+
+DEFAULT = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'config', 'rubric.yaml')
+L_PATH = [(1.0, 3.0), (1.0, 1.0), (2.2, 1.0)]
+OK = Step(True, 'fine')
+
+
+def facts(drawing=None, expected='L', **steps):
+    drawing = drawing or Drawing(L_PATH, 1.0, 5.0, 200, [], [])
+    given = dict(build=OK, launch=OK, waited=OK, talker=OK)
+    given.update(steps)
+    return Facts(expected, '', given['build'], given['launch'], given['waited'],
+                 given['talker'], drawing, read(drawing.path) if drawing.path else None)
+
+
+def scores_of(graded):
+    return {t.name: (t.score, t.output) for t in graded.tests}
+
+
+def write(tmp_path, text):
+    path = tmp_path / 'rubric.yaml'
+    path.write_text(text)
+    return str(path)
+
+
+def test_the_default_rubric_scores_every_criterion_and_totals_100():
+    rubric = load(DEFAULT)
+    assert list(rubric.points) == list(CRITERIA)
+    assert sum(rubric.points.values()) == 100
+    graded = grade(facts(), rubric)
+    assert (graded.score, graded.verdict, graded.reason) == (100, 'pass', 'every criterion met')
+
+
+def test_an_instructors_file_changes_only_what_it_gives(tmp_path):
+    rubric = load(DEFAULT, write(tmp_path, 'points: {letter: 50}\nlimits: {drawing: 20}\n'))
+    assert rubric.points['letter'] == 50 and rubric.points['builds'] == 10
+    assert rubric.limits.drawing == 20 and rubric.limits.build == 300
+
+
+@pytest.mark.parametrize('text, says', [
+    ('points: {colour: 5}\n', 'unknown colour'),
+    ('limits: {drawing: -1}\n', 'limits: drawing: -1'),
+    ('accuracy: {full: 0.2}\n', 'must be above full'),
+    ('pass_score: [1]\n', 'pass_score'),
+    ('- a list\n', 'expected a mapping'),
+    ('points: {letter: 5\n', 'rubric.yaml'),
+])
+def test_a_bad_rubric_says_which_entry_and_why(tmp_path, text, says):
+    with pytest.raises(RubricError, match=says):
+        load(DEFAULT, write(tmp_path, text))
+
+
+def test_each_step_that_failed_costs_its_points_and_says_why():
+    graded = grade(facts(talker=Step(False, "nothing on /chatter: NameError: 'raw_input'")),
+                   load(DEFAULT))
+    assert graded.score == 90 and graded.verdict == 'pass'
+    assert graded.reason.endswith("NameError: 'raw_input'")
+
+
+def test_a_failed_build_reaches_nothing_else():
+    graded = grade(Facts('L', '', Step(False, 'catkin_make failed: x'), None, None, None, None,
+                         None), load(DEFAULT))
+    assert graded.score == 0 and graded.verdict == 'fail'
+    assert scores_of(graded)['It launches'] == (0, 'not tried: the build failed')
+
+
+def test_the_wrong_letter_earns_no_accuracy():
+    graded = grade(facts(expected='K'), load(DEFAULT))
+    lines = scores_of(graded)
+    assert lines['The letter drawn is the expected one'] == (0, 'drew L, expected K')
+    assert lines['Its accuracy'][0] == 0
+
+
+def test_accuracy_falls_linearly_between_full_and_none():
+    bowed = [(1.0, 3.0), (1.2, 2.0), (1.0, 1.0), (2.2, 1.0)]    # 0.2 m off a 2 m stem: 10%
+    score = scores_of(grade(facts(Drawing(bowed, 1.0, 5.0, 9, [], [])), load(DEFAULT)))
+    assert score['Its accuracy'][0] == pytest.approx(10, abs=1.5)
+
+
+def test_made_up_poses_and_teleports_fail_the_driving():
+    made_up = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 0, ['/f_drawer'], [])),
+                             load(DEFAULT)))
+    jumped = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 0, [], [(2.0, 1.5)])),
+                            load(DEFAULT)))
+    assert made_up['The turtle was driven over cmd_vel'][0] == 0
+    assert '/f_drawer' in made_up['The turtle was driven over cmd_vel'][1]
+    assert 'teleport' in jumped['The turtle was driven over cmd_vel'][1]
+
+
+def test_a_drawing_that_never_ends():
+    lines = scores_of(grade(facts(Drawing(L_PATH, 1.0, None, 900, [], [])), load(DEFAULT)))
+    assert lines['The drawing ends, the turtle standing still'][0] == 0
+
+
+def test_a_required_criterion_failed_fails_whatever_the_score():
+    jumped = grade(facts(Drawing(L_PATH, 1.0, 5.0, 0, [], [(2.0, 1.5)])), load(DEFAULT))
+    assert jumped.score == 90 and jumped.verdict == 'fail'
+    assert jumped.reason.startswith('The turtle was driven over cmd_vel: the turtle jumped')
+
+
+def test_required_names_only_criteria(tmp_path):
+    with pytest.raises(RubricError, match='required'):
+        load(DEFAULT, write(tmp_path, 'required: [colour]\n'))

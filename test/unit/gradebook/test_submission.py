@@ -1,0 +1,46 @@
+"""Finding a cadet's package in their folder, and the launch file the lab runs."""
+import os
+
+from turtle_letters.gradebook.submission import copy, find
+
+PACKAGE = '<package format="2"><name>{}</name></package>'
+LAB = ('<launch><node pkg="turtlesim" type="turtlesim_node" name="sim"/>'
+       '<node pkg="my_lab" type="controller.py" name="c"/></launch>')
+
+
+def make(root, files):
+    for path, text in files.items():
+        full = os.path.join(root, path)
+        os.makedirs(os.path.dirname(full), exist_ok=True)
+        with open(full, 'w') as f:
+            f.write(text)
+
+
+def test_the_package_at_any_depth_and_the_launch_file_with_turtlesim_and_a_controller(tmp_path):
+    make(tmp_path, {'zip/catkin_ws/src/my_lab/package.xml': PACKAGE.format('my_lab'),
+                    'zip/catkin_ws/src/my_lab/launch/a_sim.launch':
+                        '<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/></launch>',
+                    'zip/catkin_ws/src/my_lab/launch/lab.launch': LAB,
+                    'zip/catkin_ws/src/my_lab/launch/broken.launch': '<launch><node',
+                    'zip/catkin_ws/build/other/package.xml': PACKAGE.format('other')})
+    package = find(str(tmp_path))
+    assert package.name == 'my_lab' and package.problem == ''
+    assert package.folder.endswith('src/my_lab') and package.launch == 'launch/lab.launch'
+
+
+def test_no_package_no_name_no_launch_file(tmp_path):
+    assert find(str(tmp_path)).problem == f'no package.xml in {tmp_path}'
+    make(tmp_path, {'a/package.xml': '<package format="2"></package>'})
+    assert 'names no package' in find(str(tmp_path)).problem
+    make(tmp_path, {'a/package.xml': PACKAGE.format('a')})
+    assert find(str(tmp_path)).problem == f'no launch file in {tmp_path}/a'
+
+
+def test_the_copy_keeps_links_as_links_and_leaves_builds_behind(tmp_path):
+    make(tmp_path, {'sub/p/package.xml': PACKAGE.format('p'), 'sub/p/launch/x.launch': LAB,
+                    'sub/p/build/junk': 'x', 'secret': 'the instructor\'s'})
+    os.symlink(str(tmp_path / 'secret'), str(tmp_path / 'sub' / 'p' / 'link'))
+    target = copy(find(str(tmp_path / 'sub')), str(tmp_path / 'ws'))
+    assert os.path.islink(os.path.join(target, 'link'))
+    assert not os.path.exists(os.path.join(target, 'build'))
+    assert os.path.exists(os.path.join(target, 'launch', 'x.launch'))
