@@ -1,6 +1,6 @@
 #!/bin/bash
 # `make test`: unit tests (pytest, no ROS), every rostest through catkin, the
-# network tests (pytest, as root), the doc pages' commands, then the workspace tests (pytest, several
+# network tests (pytest, as root), a class graded (pytest, as root), the doc pages' commands, then the workspace tests (pytest, several
 # catkin builds of their own); ends with
 # one line "N passed, N failed" counted over all of them.
 set -u
@@ -36,6 +36,11 @@ echo "== network tests: a classroom of machines made of network namespaces (root
 mkdir -p "$results/network"
 (cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
   --junitxml="$results/network/pytest.xml" test/network) || status=1
+
+echo "== class tests: a class of cadets' packages graded by grade_class.py (root only)"
+mkdir -p "$results/class"
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
+  --junitxml="$results/class/pytest.xml" test/class) || status=1
 
 echo "== doc commands: every command of the README and doc/ pages, run as written"
 mkdir -p "$results/doc"

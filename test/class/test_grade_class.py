@@ -1,0 +1,156 @@
+"""A class of cadets' packages of our own (submissions/), graded end to end
+by grade_class.py as an instructor runs it: each row held against what a
+careful instructor concludes, the files handed back, and nothing left
+behind: the submissions unchanged, no process, no network namespace.
+Needs root (each submission gets a network namespace); skipped elsewhere."""
+import csv
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import xml.etree.ElementTree as ElementTree
+
+import pytest
+
+from support.children import readable_env
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SUBMISSIONS = os.path.join(HERE, 'submissions')
+ROSTER = os.path.join(HERE, 'roster.csv')
+RUBRIC = os.path.join(HERE, 'rubric.yaml')
+pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason='grading makes network namespaces: '
+                                                          'root only')
+
+# id: (expected, drawn, verdict, words in the reason)
+CONCLUSIONS = {
+    'c01_nadia': ('N', 'N', 'pass', "NameError: name 'raw_input' is not defined"),
+    'c02_kofi': ('K', 'K', 'pass', ''),
+    'c03_lena': ('L', 'L', 'pass', 'every criterion met'),
+    'c04_maria': ('M', 'N', 'fail', 'drew N, expected M'),
+    'c05_omar': ('O', '', 'fail', "It builds: catkin_make failed"),
+    'c06_pavel': ('P', '', 'fail', 'Cannot locate node of type [controler.py]'),
+    'c07_quinn': ('Q', 'O', 'fail', 'drew O, expected Q'),
+    'c08_tariq': ('T', 'T', 'fail', 'a teleport'),
+    'c09_fatima': ('F', '', 'fail', 'nothing was drawn'),
+    'c10_sam': ('S', '', 'fail', f'no package.xml in {SUBMISSIONS}/c10_sam'),
+    'c11_zoe': ('Z', '', 'fail', 'no submission'),
+    'x_late': ('', 'I', 'fail', 'no letter is expected'),
+}
+
+
+def tree_hash(top):
+    digest = hashlib.sha256()
+    for folder, folders, files in sorted(os.walk(top)):
+        folders.sort()
+        for name in sorted(files):
+            path = os.path.join(folder, name)
+            digest.update(path.encode() + oct(os.lstat(path).st_mode).encode())
+            with open(path, 'rb') as f:
+                digest.update(f.read())
+    return digest.hexdigest()
+
+
+def grade_class(*args, timeout=900):
+    return subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', *args],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, env=readable_env(), timeout=timeout)
+
+
+def leftovers():
+    """Processes still running from a grading's work folders, and its namespaces."""
+    processes = subprocess.run(['pgrep', '-af', 'turtle_letters_grade_'], stdout=subprocess.PIPE,
+                               universal_newlines=True).stdout.splitlines()
+    namespaces = subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
+                                universal_newlines=True).stdout
+    return processes, [n for n in namespaces.split() if n.startswith('tlgrade')]
+
+
+@pytest.fixture(scope='module')
+def graded(tmp_path_factory):
+    out = str(tmp_path_factory.mktemp('grades'))
+    before = tree_hash(SUBMISSIONS)
+    done = grade_class(SUBMISSIONS, '--roster', ROSTER, '--rubric', RUBRIC, '--out', out,
+                       '--jobs', '2')
+    return done, out, before
+
+
+def test_every_student_gets_the_row_a_careful_instructor_would(graded):
+    done, out, _ = graded
+    assert done.returncode == 0, done.stdout[-3000:]
+    with open(os.path.join(out, 'grades.csv')) as f:
+        rows = list(csv.DictReader(f))
+    assert [r['id'] for r in rows] == list(CONCLUSIONS)
+    for row in rows:
+        expected, drawn, verdict, words = CONCLUSIONS[row['id']]
+        assert (row['expected'], row['drawn'], row['verdict']) == (expected, drawn, verdict), row
+        assert words in row['reason'], row
+    assert 'x_late: a submission the roster lacks' in done.stdout
+
+
+def test_each_criterion_says_what_happened(graded):
+    _, out, _ = graded
+
+    def tests(student):
+        with open(os.path.join(out, student, 'results.json')) as f:
+            data = json.load(f)
+        assert data['score'] == sum(t['score'] for t in data['tests'])
+        return {t['name']: t for t in data['tests']}
+    nadia, lena = tests('c01_nadia'), tests('c03_lena')
+    assert nadia['The talker publishes P on a key press']['status'] == 'failed'
+    assert nadia['The letter drawn is the expected one']['status'] == 'passed'
+    assert lena['The talker publishes P on a key press']['status'] == 'passed'  # a key, no Enter
+    assert 'never ended' in tests('c07_quinn')['The drawing ends, the turtle standing still'][
+        'output']
+    assert '/f_drawer' in tests('c09_fatima')['The turtle was driven over cmd_vel']['output']
+    assert tests('c02_kofi')['Its accuracy']['score'] > 10
+
+
+def test_the_files_handed_back(graded):
+    _, out, _ = graded
+    page = open(os.path.join(out, 'report.html')).read()
+    for student, (_, drawn, _, _) in CONCLUSIONS.items():
+        assert f'id="{student}"' in page
+        assert os.path.exists(os.path.join(out, student, 'drawing.png')) == bool(drawn), student
+    log = open(os.path.join(out, 'c01_nadia', 'log.txt')).read()
+    assert 'catkin_make' in log and "NameError: name 'raw_input' is not defined" in log
+    suite = ElementTree.parse(os.path.join(out, 'junit.xml')).getroot()
+    assert suite.get('tests') == '12' and suite.get('failures') == '9'
+
+
+def test_nothing_is_left_behind(graded):
+    _, _, before = graded
+    assert tree_hash(SUBMISSIONS) == before
+    assert leftovers() == ([], [])
+
+
+def test_one_submission_exits_0_on_pass_and_1_on_fail(tmp_path):
+    passed = grade_class('--one', os.path.join(SUBMISSIONS, 'x_late'), '--letter', 'I',
+                         '--rubric', RUBRIC, '--out', str(tmp_path / 'a'))
+    failed = grade_class('--one', os.path.join(SUBMISSIONS, 'c08_tariq'), '--name', 'Tariq',
+                         '--rubric', RUBRIC, '--out', str(tmp_path / 'b'))
+    assert passed.returncode == 0, passed.stdout[-2000:]
+    assert failed.returncode == 1 and 'teleport' in failed.stdout
+
+
+def test_gradescope_mode_writes_its_results_where_gradescope_reads_them(tmp_path):
+    root = tmp_path / 'autograder'
+    shutil.copytree(os.path.join(SUBMISSIONS, 'x_late'), str(root / 'submission'), symlinks=True)
+    (root / 'submission_metadata.json').write_text(json.dumps(
+        {'users': [{'name': 'Ida Wells', 'email': 'ida@example.edu'}]}))
+    done = grade_class('--gradescope', '--autograder', str(root), '--rubric', RUBRIC)
+    assert done.returncode == 0, done.stdout[-2000:]
+    results = json.loads((root / 'results' / 'results.json').read_text())
+    assert results['output'].startswith('PASS') and len(results['tests']) == 8
+    assert {'drawing time (s)', 'cmd_vel rate (/s)'} <= {b['name'] for b in results['leaderboard']}
+
+
+@pytest.mark.parametrize('args, says', [
+    (['--roster', '/nonexistent.csv'], 'No such file'),
+    (['--roster', __file__], 'header with id,name'),
+    (['--roster', ROSTER, '--rubric', __file__], 'rubric'),
+])
+def test_bad_input_stops_before_anything_runs(tmp_path, args, says):
+    done = grade_class(SUBMISSIONS, '--out', str(tmp_path / 'out'), *args, timeout=60)
+    assert done.returncode == 2 and says in done.stdout
+    assert not os.path.exists(tmp_path / 'out' / 'c01_nadia')
