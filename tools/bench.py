@@ -9,10 +9,13 @@ bench-results/bench.json (every figure, the machine, the simulator) and
 bench-results/bench.png (ideal strokes and recorded paths, corners enlarged).
 
 A classroom group (tools/bench_classroom.py) draws the N with 1, 10 and 30
-turtles at once, and a parallel word against its slowest letter alone.
+turtles at once, and a parallel word against its slowest letter alone. A
+grading group (tools/bench_grading.py, root) grades a class of 30 with
+grade_class.py, and the lab's own submission alone against it in the class.
 
 Usage: bench.py [--reps N] [--letter N] [--modes timed,timed-wall,feedback] [--loads idle,loaded]
-                [--classroom 1,10,30] [--parallel-word yes|no]
+                [--classroom 1,10,30] [--parallel-word yes|no] [--grade-class 30]
+                [--fairness yes|no]
 """
 import argparse
 import json
@@ -43,6 +46,7 @@ from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # 
                            wait_until)
 from turtle_letters.grading.procstat import cpu_seconds, rss_mb  # noqa: E402
 from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
+from bench_grading import alone_runs, class_run, grading_lines  # noqa: E402
 
 # Loaded, a command that misses turtlesim's 16 ms tick is replaced by the one
 # before, applied once more: smooth mode then runs on up to a tick's move
@@ -347,6 +351,7 @@ def table(results, sim):
     lines.extend(clock_ratios(results))
     lines.extend(word_lines(results))
     lines.extend(classroom_lines(results))
+    lines.extend(grading_lines(results))
     sim_f = results['simulator_figures']
     idle, ten = sim_f['idle'], sim_f['ten_moving']
 
@@ -387,6 +392,10 @@ def main():
     parser.add_argument('--parallel-word', default='yes', choices=('yes', 'no'))
     parser.add_argument('--svg', default='yes', choices=('yes', 'no'),
                         help='draw doc/flower.svg in smooth mode, per load')
+    parser.add_argument('--grade-class', default='30',
+                        help='students in a class graded by grade_class.py ("" for none; root)')
+    parser.add_argument('--fairness', default='yes', choices=('yes', 'no'),
+                        help="the lab's submission graded alone 3 times, against the class")
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
@@ -395,6 +404,13 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     sim_kind = open(os.path.join(os.environ['WS'], '.simulator')).read().strip()
 
+    graded = {}
+    if args.grade_class:
+        print(f'bench: grade_class.py, a class of {args.grade_class}...', flush=True)
+        graded['grade_class'] = class_run(int(args.grade_class))
+    if args.fairness == 'yes':
+        print("bench: the lab's submission graded alone, 3 times...", flush=True)
+        graded['grade_alone'] = alone_runs()
     processes = Processes(args.out)
     loads = []
     try:
@@ -409,7 +425,7 @@ def main():
         print(f'bench: simulator {sim_kind}, {os.cpu_count()} cores; measuring the idle simulator...',
               flush=True)
         results = {'simulator_figures': simulator_figures(processes, sim.pid, recorder),
-                   'groups': []}
+                   'groups': [], **graded}
         for turtles in filter(None, args.classroom.split(',')):
             print(f'bench: classroom, {turtles} turtles at once...', flush=True)
             results.setdefault('classroom', []).append(

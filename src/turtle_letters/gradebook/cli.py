@@ -105,6 +105,9 @@ def leaderboard(facts, run):
              ('cmd_vel rate (/s)', round(d.commands / max(d.seconds, 1e-6), 1), 'asc')]
     if run and run.cpu_pct is not None:
         board.append(('controller CPU (%)', round(run.cpu_pct, 1), 'asc'))
+    if facts.reading and facts.reading.best:
+        board.append(('worst deviation (% of height)', round(100 * facts.reading.best.fit, 2),
+                      'asc'))
     return board
 
 

@@ -1,0 +1,121 @@
+"""`make bench`'s grading group: a class graded by grade_class.py.
+
+- A class of copies of the test class's good submissions (test/class), as
+  many students as asked (30 by default), graded with --jobs 2: minutes
+  per class, and each student's grading time beyond their drawing (build,
+  launch, the wait before the key, the settle).
+- Fairness: the lab's own busy-loop controller (c01_nadia) graded alone
+  three times, against its copies graded in that class: the same verdict
+  and letter, and a worst deviation within the spread of the runs alone.
+"""
+import csv
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import tempfile
+import time
+
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
+CLASS = os.path.join(REPO, 'test', 'class')
+MODELS = [('c01_nadia', 'Nadia Novak'), ('c02_kofi', 'Kofi Mensah'), ('c03_lena', 'Lena Ortiz'),
+          ('c04_maria', 'Maria Silva')]
+LAB = 'c01_nadia'
+CLASS_TARGET_MIN, OVERHEAD_TARGET_S = 15.0, 15.0    # for 30 students on 2 cores
+
+
+def _grade(*args):
+    return subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', *args],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, env=dict(os.environ, PYTHONUNBUFFERED='1'))
+
+
+def _results(out, student):
+    with open(os.path.join(out, student, 'results.json')) as f:
+        data = json.load(f)
+    board = {b['name']: b['value'] for b in data['leaderboard']}
+    return data, board
+
+
+def _row(out, student):
+    with open(os.path.join(out, 'grades.csv')) as f:
+        return next(r for r in csv.DictReader(f) if r['id'] == student)
+
+
+def class_run(students, jobs=2):
+    """Grade `students` copies of the models; minutes, and each one's overhead."""
+    top = tempfile.mkdtemp(prefix='bench_class_')
+    try:
+        subs, out = os.path.join(top, 'submissions'), os.path.join(top, 'out')
+        with open(os.path.join(top, 'roster.csv'), 'w') as f:
+            f.write('id,name\n')
+            for i in range(students):
+                model, name = MODELS[i % len(MODELS)]
+                shutil.copytree(os.path.join(CLASS, 'submissions', model),
+                                os.path.join(subs, f's{i + 1:02}_{model}'), symlinks=True)
+                f.write(f's{i + 1:02}_{model},{name}\n')
+        started = time.monotonic()
+        done = _grade(subs, '--roster', os.path.join(top, 'roster.csv'), '--out', out,
+                      '--jobs', str(jobs))
+        minutes = (time.monotonic() - started) / 60
+        if done.returncode != 0:
+            raise RuntimeError(f'grade_class.py failed:\n{done.stdout[-3000:]}')
+        overheads, lab = [], []
+        for i in range(students):
+            student = f's{i + 1:02}_{MODELS[i % len(MODELS)][0]}'
+            data, board = _results(out, student)
+            overheads.append(data['execution_time'] - board.get('drawing time (s)', 0.0))
+            if student.endswith(LAB):
+                row = _row(out, student)
+                lab.append(dict(verdict=row['verdict'], drawn=row['drawn'],
+                                fit_pct=board.get('worst deviation (% of height)')))
+        return dict(students=students, jobs=jobs, minutes=minutes,
+                    overhead_median_s=statistics.median(overheads),
+                    overhead_worst_s=max(overheads), lab_in_class=lab)
+    finally:
+        shutil.rmtree(top, ignore_errors=True)
+
+
+def alone_runs(reps=3):
+    """The lab's submission graded alone, `reps` times."""
+    runs = []
+    for _ in range(reps):
+        out = tempfile.mkdtemp(prefix='bench_alone_')
+        try:
+            _grade('--one', os.path.join(CLASS, 'submissions', LAB), '--name', 'Nadia', '--out',
+                   out)
+            _, board = _results(out, LAB)
+            row = _row(out, LAB)
+            runs.append(dict(verdict=row['verdict'], drawn=row['drawn'],
+                             fit_pct=board.get('worst deviation (% of height)')))
+        finally:
+            shutil.rmtree(out, ignore_errors=True)
+    return runs
+
+
+def grading_lines(results):
+    lines = ['']
+    c = results.get('grade_class')
+    if c:
+        lines.append(
+            f"grade_class.py, {c['students']} students, --jobs {c['jobs']}: "
+            f"{c['minutes']:.1f}{'!' if c['minutes'] > CLASS_TARGET_MIN * c['students'] / 30 else ''}"
+            f" min; beyond each drawing median {c['overhead_median_s']:.1f} s, worst "
+            f"{c['overhead_worst_s']:.1f}{'!' if c['overhead_worst_s'] > OVERHEAD_TARGET_S else ''} s")
+    alone = results.get('grade_alone')
+    if alone and c:
+        fits = [r['fit_pct'] for r in alone]
+        spread = max(fits) - min(fits)
+        inside = [r['fit_pct'] for r in c['lab_in_class']]
+        far = max(abs(f - statistics.median(fits)) for f in inside) if inside else 0.0
+        same = {(r['verdict'], r['drawn']) for r in alone + c['lab_in_class']}
+        lines.append(
+            f"fairness, the lab's busy-loop N: alone {', '.join(f'{f:.2f}' for f in fits)}% of the "
+            f"height (spread {spread:.2f}); in the class {', '.join(f'{f:.2f}' for f in inside)}% "
+            f"(farthest from the median alone {far:.2f}{'!' if far > max(spread, 0.01) else ''}); "
+            f"verdicts and letters {sorted(same)}{'!' if len(same) > 1 else ''}")
+    lines.append(f'Grading targets: {CLASS_TARGET_MIN:g} min for 30 students on 2 cores; '
+                 f'<= {OVERHEAD_TARGET_S:g} s per student beyond the drawing; the same verdict '
+                 f'and letter alone and in a class, the deviation within the spread alone.')
+    return lines
