@@ -41,6 +41,13 @@ ELSEWHERE = {
     'rostest turtle_letters grade.test controller:="my_lab my_controller.py"':
         "a student's package: test/grade.test with this package's controller",
     'roslaunch turtle_letters classroom.launch grade:=true': 'test/classroom.test',
+    'rosrun turtle_letters grade_class.py SUBMISSIONS --roster ROSTER.csv --out OUT --jobs 2':
+        'test/class/test_grade_class.py grades a class so, with --jobs 2',
+    'rosrun turtle_letters grade_class.py --one FOLDER --name "Kofi Mensah" --out OUT':
+        'test/class/test_grade_class.py: one submission, exit 0 on pass and 1 on fail',
+    'rosrun turtle_letters grade_class.py test/class/submissions --roster test/class/roster.csv '
+    '--rubric test/class/rubric.yaml --out /tmp/grades --jobs 2':
+        'test/class/test_grade_class.py runs exactly this, into a folder of its own',
 }
 RECIPE = 'doc/install.md'       # test/workspace/test_workspaces.py runs it line by line
 # Sent to a launch, in this order, each with what its controller then says

@@ -39,6 +39,9 @@ def arguments(argv):
     parser.add_argument('--one', metavar='FOLDER', help='grade one submission; exit 0 on pass')
     parser.add_argument('--name', default='', help="with --one: the cadet's name")
     parser.add_argument('--letter', default='', help='with --one: the letter expected')
+    parser.add_argument('--no-sandbox', dest='isolated', action='store_false',
+                        help='run each submission unisolated, where the machine is a sandbox '
+                             "already (Gradescope's container); a master port each, no more")
     parser.add_argument('--gradescope', action='store_true',
                         help=f'grade AUTOGRADER/submission into AUTOGRADER/results/results.json')
     parser.add_argument('--autograder', default=GRADESCOPE,
@@ -53,6 +56,8 @@ def arguments(argv):
         parser.error('--one needs --out, and --name or --letter')
     if args.jobs < 1:
         parser.error(f'--jobs {args.jobs}: at least 1')
+    if args.one or args.gradescope:
+        args.jobs = 1
     return args
 
 
@@ -60,14 +65,14 @@ def default_rubric():
     return os.path.join(rospkg.RosPack().get_path('turtle_letters'), 'config', 'rubric.yaml')
 
 
-def facts_of(student, rubric, work, hidden):
+def facts_of(student, rubric, work, hidden, isolated):
     """Run the student's submission and say what happened."""
     if student.folder is None:
         return rubrics.Facts(student.expected, 'no submission', *[None] * 6), []
     package = submission.find(student.folder)
     if package.problem:
         return rubrics.Facts(student.expected, package.problem, *[None] * 6), []
-    run = session.run(package, work, rubric.limits, hidden)
+    run = session.run(package, work, rubric.limits, hidden, isolated)
     drawing = reading = None
     if run.trigger is not None:
         drawing = seen.drawing(run.events, run.since, rubric.limits.settle, run.finished)
@@ -77,13 +82,13 @@ def facts_of(student, rubric, work, hidden):
     return facts, run
 
 
-def grade_student(student: Student, rubric, out, hidden, warning=''):
+def grade_student(student: Student, rubric, out, hidden, isolated, warning=''):
     """One student's row; their results.json and log.txt written (the picture: later)."""
     started = time.monotonic()
     os.makedirs(reports.folder(out, student.id), exist_ok=True)
     work = tempfile.mkdtemp(prefix='turtle_letters_grade_')
     try:
-        facts, run = facts_of(student, rubric, work, hidden)
+        facts, run = facts_of(student, rubric, work, hidden, isolated)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     graded = rubrics.grade(facts, rubric)
@@ -127,24 +132,24 @@ def draw_picture(out, row, facts):
     return row._replace(picture=os.path.relpath(path, out))
 
 
-def say(row):
+def say(row, isolated):
     g = row.grade
-    print(f'{row.id} {row.name}: drew {row.drawn or "no letter"}, expected '
+    print(('' if isolated else '[no sandbox: nothing isolated] ') + f'{row.id} {row.name}: drew {row.drawn or "no letter"}, expected '
           f'{row.expected or "?"}: {g.score:g}/{g.max_score:g} {g.verdict.upper()}: {g.reason}',
           flush=True)
 
 
-def grade_all(students, rubric, out, hidden, jobs, warnings=None):
-    """Every student's row, in roster order, `jobs` at a time."""
+def grade_all(students, rubric, out, hidden, args, warnings=None):
+    """Every student's row, in roster order, `args.jobs` at a time."""
     warnings = warnings or {}
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(grade_student, s, rubric, out, hidden, warnings.get(s.id, ''))
-                   for s in students]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        futures = [pool.submit(grade_student, s, rubric, out, hidden, args.isolated,
+                               warnings.get(s.id, '')) for s in students]
         rows = []
         for future in futures:
             row, facts = future.result()
             row = draw_picture(out, row, facts)
-            say(row)
+            say(row, args.isolated)
             rows.append(row)
     return rows
 
@@ -168,7 +173,7 @@ def grade_class(args, rubric):
     noted = {line.split(':', 1)[0]: line for line in warnings}
     hidden = [args.submissions, args.roster, out]
     started = time.monotonic()
-    rows = grade_all(students, rubric, out, hidden, args.jobs, noted)
+    rows = grade_all(students, rubric, out, hidden, args, noted)
     write_class(out, rows, f'turtle_letters: {len(rows)} students graded')
     print(f'{sum(r.grade.verdict == "pass" for r in rows)} of {len(rows)} passed in '
           f'{(time.monotonic() - started) / 60:.1f} min; {out}/report.html', flush=True)
@@ -181,7 +186,7 @@ def grade_one(args, rubric):
     student = Student(os.path.basename(folder.rstrip('/')), args.name, expected, folder)
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
-    rows = grade_all([student], rubric, out, [out], 1)
+    rows = grade_all([student], rubric, out, [out], args)
     write_class(out, rows, f'turtle_letters: {student.id}')
     for test in rows[0].grade.tests:
         print(f'  {test.name}: {test.score:g}/{test.max_score:g}: {test.output}')
@@ -200,7 +205,7 @@ def grade_gradescope(args, rubric):
     expected = args.letter.upper() or first_letter(name)
     student = Student('submission', name, expected, os.path.join(root, 'submission'))
     out = tempfile.mkdtemp(prefix='turtle_letters_gradescope_')
-    rows = grade_all([student], rubric, out, [out], 1)
+    rows = grade_all([student], rubric, out, [out], args)
     os.makedirs(os.path.join(root, 'results'), exist_ok=True)
     reports.write_results(os.path.join(root, 'results', 'results.json'), rows[0])
     return 0
@@ -208,7 +213,7 @@ def grade_gradescope(args, rubric):
 
 def main(argv=None):
     args = arguments(sys.argv[1:] if argv is None else argv)
-    problem = sandbox.problem()
+    problem = sandbox.problem() if args.isolated else None
     if problem:
         print(f'grade_class.py: {problem}; nothing was graded', file=sys.stderr)
         return 2

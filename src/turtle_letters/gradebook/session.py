@@ -23,7 +23,7 @@ from .submission import Package, copy
 
 WATCHER = '/grade_watch'
 POLL = 0.1                  # s between looks at what the watcher saw
-LOG_LINES = 60              # lines kept of each step's output in log.txt
+STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
                  'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
@@ -48,12 +48,11 @@ class Run:
         self.finished = None    # t the run stopped watching
 
 
-def _env(work):
+def _env(work, master_uri):
     env = {name: os.environ[name] for name in ROS_VARIABLES if name in os.environ}
     env.update(HOME=os.path.join(work, 'home'), ROS_HOME=os.path.join(work, 'home', '.ros'),
                PATH=f"{os.path.join(work, 'bin')}:/usr/bin:/bin:{os.environ.get('PATH', '')}",
-               ROS_MASTER_URI='http://127.0.0.1:11311', ROS_IP='127.0.0.1',
-               QT_QPA_PLATFORM='offscreen', LANG='C.UTF-8', TERM='xterm', PYTHONUNBUFFERED='1')
+               ROS_MASTER_URI=master_uri, ROS_IP='127.0.0.1', QT_QPA_PLATFORM='offscreen', LANG='C.UTF-8', TERM='xterm', PYTHONUNBUFFERED='1')
     return env
 
 
@@ -67,10 +66,12 @@ def prepare(package, work):
 
 
 def build(box, work, limits):
-    command = ['bash', '-c', 'cd ws && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3']
+    command = ['bash', '-c', 'cd "$0/ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3',
+               work]
     started = time.monotonic()
     try:
-        done = subprocess.run(box.inside(command, _env(work)), stdout=subprocess.PIPE,
+        done = subprocess.run(box.inside(command, _env(work, box.master_uri)),
+                              stdout=subprocess.PIPE,
                               stderr=subprocess.STDOUT, timeout=limits.build)
     except subprocess.TimeoutExpired as e:
         return Step(False, f'the build did not end within {limits.build:g} s'), _text(e.output)
@@ -91,7 +92,8 @@ class Terminal:
     """roslaunch with a pseudo-terminal for its stdin and output, as in a
     terminal window; what it prints is kept."""
 
-    def __init__(self, argv):
+    def __init__(self, argv, gentle):
+        self.gentle = gentle    # stopped with Ctrl-C first: nothing else ends its nodes
         self.master, slave = pty.openpty()
         self.process = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave,
                                         start_new_session=True)
@@ -117,8 +119,14 @@ class Terminal:
         return plain(bytes(self.output).decode('utf-8', 'replace'))
 
     def stop(self):
+        if self.gentle and self.process.poll() is None:
+            self.process.send_signal(signal.SIGINT)
+            try:
+                self.process.wait(timeout=STOP_SECONDS)
+            except subprocess.TimeoutExpired:
+                pass
         if self.process.poll() is None:
-            self.process.send_signal(signal.SIGKILL)
+            self.process.kill()
         self.process.wait()
         os.close(self.master)
 
@@ -127,7 +135,7 @@ class Watcher:
     """watch.py in the submission's network namespace: its events, as they come."""
 
     def __init__(self, box):
-        env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:11311', ROS_IP='127.0.0.1',
+        env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
                    PYTHONUNBUFFERED='1')
         self.process = subprocess.Popen(
             box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
@@ -257,11 +265,11 @@ class ControllerCpu:
         return 100 * (self._used() - self.used) / max(time.monotonic() - self.started, 1e-6)
 
 
-def run(package: Package, work, limits: Limits, hidden=()) -> Run:
+def run(package: Package, work, limits: Limits, hidden=(), isolated=True) -> Run:
     """Build, launch, type P, watch: the whole run of one submission."""
     result = Run(package)
     prepare(package, work)
-    with Sandbox(work, hidden) as box:
+    with Sandbox(work, hidden, isolated) as box:
         result.build, output = build(box, work, limits)
         result.log.append(('catkin_make', output))
         if result.build.ok:
@@ -271,9 +279,10 @@ def run(package: Package, work, limits: Limits, hidden=()) -> Run:
 
 def _launch_and_watch(box, work, limits, result):
     launch = os.path.basename(result.package.launch)
-    command = ['bash', '-c', 'source ws/devel/setup.bash && exec roslaunch "$0" "$1"',
-               result.package.name, launch]
-    terminal, watcher = Terminal(box.inside(command, _env(work))), Watcher(box)
+    command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && exec roslaunch "$1" "$2"',
+               work, result.package.name, launch]
+    terminal = Terminal(box.inside(command, _env(work, box.master_uri)), not box.isolated)
+    watcher = Watcher(box)
     try:
         _watch(terminal, watcher, limits, result, work)
     finally:
