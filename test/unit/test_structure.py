@@ -27,7 +27,7 @@ PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors'
         'classroom.names',
         'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
         'grading.recognition', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',
-        'gradebook.reports', 'gradebook.submission', 'grading.files',
+        'gradebook.reports', 'gradebook.submission', 'gradebook.failures', 'grading.files',
         'grading.procstat', 'actions.jobs', 'actions.progress'}
 ROS = ('rospy', 'rosgraph', 'actionlib', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')
 

@@ -7,7 +7,6 @@ for the rubric to score; nothing here decides points.
 import json
 import os
 import pty
-import re
 import signal
 import subprocess
 import threading
@@ -15,7 +14,8 @@ import time
 from typing import NamedTuple
 
 from . import observations as seen
-from ..grading.procstat import cpu_seconds
+from .failures import talker_failure, why_not_launched
+from .processes import ControllerCpu
 from .reports import plain
 from .rubric import Limits
 from .sandbox import Sandbox
@@ -27,7 +27,6 @@ STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside 
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
                  'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
-ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
 
 
 class Step(NamedTuple):
@@ -167,102 +166,6 @@ def wait_until(condition, seconds, alive=lambda: True):
             return True
         time.sleep(POLL)
     return bool(condition())
-
-
-def why_not_launched(output, events):
-    """Why the lab's graph did not come up, in one line."""
-    refused = [line for line in output.splitlines() if line.startswith('ERROR: cannot launch')]
-    graph = seen.last_graph(events)
-    if refused:
-        return refused[0][len('ERROR: '):]
-    if graph is None:
-        return last_error(output) or 'no ROS master came up'
-    if not graph['simulator']:
-        return 'turtlesim did not start'
-    return 'no node subscribed to /chatter: is the controller started by the launch file?'
-
-
-def last_error(*texts):
-    """The last line that reads as an error (a Python exception's, or roslaunch's)."""
-    lines = [line.strip() for text in texts for line in text.splitlines()
-             if ERROR_LINE.match(line)]
-    return lines[-1] if lines else ''
-
-
-def node_logs(work, node=''):
-    """The text of the log files of every node (or of `node`) in the sandbox's home."""
-    texts, top = [], os.path.join(work, 'home', '.ros', 'log')
-    for folder, _, files in os.walk(top):
-        for name in sorted(files):
-            path = os.path.join(folder, name)
-            if name.endswith('.log') and not os.path.islink(path) \
-                    and not name.startswith(('master', 'roslaunch', 'rosout')) \
-                    and name.startswith(node):
-                with open(path, errors='replace') as f:
-                    texts.append(f.read()[-20000:])
-    return '\n'.join(texts)
-
-
-def talker_failure(output, work):
-    """Why the talker said nothing: the last error line of the first node
-    roslaunch saw die (from its log, else from the terminal before it died),
-    else the last error line anywhere."""
-    died = re.search(r'^\[(\S+?)(-\d+)?\] process has died', output, re.MULTILINE)
-    if died:
-        node = died.group(1)
-        return (last_error(node_logs(work, node)) or last_error(output[:died.start()])
-                or f'{node} died')
-    return last_error(output, node_logs(work))
-
-
-def controller_processes(root, node):
-    """pids of the processes under `root` that roslaunch started as `node`."""
-    wanted, found = f'__name:={node.rsplit("/", 1)[-1]}'.encode(), []
-    for pid in filter(str.isdigit, os.listdir('/proc')):
-        try:
-            with open(f'/proc/{pid}/cmdline', 'rb') as f:
-                if wanted in f.read().split(b'\0'):
-                    found.append(int(pid))
-        except OSError:
-            continue
-    return [pid for pid in found if _descends(pid, root)]
-
-
-def _descends(pid, root):
-    while pid > 1:
-        if pid == root:
-            return True
-        try:
-            with open(f'/proc/{pid}/stat') as f:
-                pid = int(f.read().rsplit(')', 1)[1].split()[1])
-        except OSError:
-            return False
-    return False
-
-
-class ControllerCpu:
-    """The CPU time of the node that publishes cmd_vel, from the trigger on."""
-
-    def __init__(self, root, events):
-        graph = seen.last_graph(events)
-        names = graph['cmd_vel_publishers'] if graph else []
-        self.pids = controller_processes(root, names[0]) if len(names) == 1 else []
-        self.started, self.used = time.monotonic(), self._used()
-
-    def _used(self):
-        total = 0.0
-        for pid in self.pids:
-            try:
-                total += cpu_seconds(pid)
-            except OSError:
-                pass
-        return total
-
-    def share(self):
-        """% of a core since the trigger, or None when no one node publishes cmd_vel."""
-        if not self.pids:
-            return None
-        return 100 * (self._used() - self.used) / max(time.monotonic() - self.started, 1e-6)
 
 
 def run(package: Package, work, limits: Limits, hidden=(), isolated=True) -> Run:

@@ -1,0 +1,62 @@
+"""Why a step of a run failed, in one line, from what the run printed:
+roslaunch's terminal and the nodes' log files in the sandbox's home. The
+files are the submission's: read as plain files only (no link, no pipe),
+and only their last part."""
+import os
+import re
+
+from . import observations as seen
+
+ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
+LOG_TAIL = 20000        # bytes read of a node's log file, from its end
+
+
+def why_not_launched(output, events):
+    """Why the lab's graph did not come up, in one line."""
+    refused = [line for line in output.splitlines() if line.startswith('ERROR: cannot launch')]
+    graph = seen.last_graph(events)
+    if refused:
+        return refused[0][len('ERROR: '):]
+    if graph is None:
+        return last_error(output) or 'no ROS master came up'
+    if not graph['simulator']:
+        return 'turtlesim did not start'
+    return 'no node subscribed to /chatter: is the controller started by the launch file?'
+
+
+def last_error(*texts):
+    """The last line that reads as an error (a Python exception's, or roslaunch's)."""
+    lines = [line.strip() for text in texts for line in text.splitlines()
+             if ERROR_LINE.match(line)]
+    return lines[-1] if lines else ''
+
+
+def node_logs(work, node=''):
+    """The text of the log files of every node (or of `node`) in the sandbox's home."""
+    texts, top = [], os.path.join(work, 'home', '.ros', 'log')
+    for folder, _, files in os.walk(top):
+        for name in sorted(files):
+            path = os.path.join(folder, name)
+            if name.endswith('.log') and not os.path.islink(path) and os.path.isfile(path) \
+                    and not name.startswith(('master', 'roslaunch', 'rosout')) \
+                    and name.startswith(node):
+                texts.append(_tail(path))
+    return '\n'.join(texts)
+
+
+def _tail(path):
+    with open(path, 'rb') as f:
+        f.seek(max(0, os.path.getsize(path) - LOG_TAIL))
+        return f.read().decode('utf-8', 'replace')
+
+
+def talker_failure(output, work):
+    """Why the talker said nothing: the last error line of the first node
+    roslaunch saw die (from its log, else from the terminal before it died),
+    else the last error line anywhere."""
+    died = re.search(r'^\[(\S+?)(-\d+)?\] process has died', output, re.MULTILINE)
+    if died:
+        node = died.group(1)
+        return (last_error(node_logs(work, node)) or last_error(output[:died.start()])
+                or f'{node} died')
+    return last_error(output, node_logs(work))

@@ -1,0 +1,46 @@
+"""Why a step failed, in one line, from what roslaunch's terminal showed
+and from the nodes' log files."""
+import os
+
+from turtle_letters.gradebook.failures import talker_failure, why_not_launched
+
+# roslaunch's terminal as the lab's talker dies under Python 3
+DIED = '''process[sim-2]: started with pid [34]
+process[talker-3]: started with pid [35]
+process[turtlebot_controller-4]: started with pid [40]
+Traceback (most recent call last):
+  File "/tmp/w/ws/src/turtlebot_lab/scripts/talker.py", line 9, in talker
+    letter = raw_input("Enter the letter: ")
+NameError: name 'raw_input' is not defined
+[talker-3] process has died [pid 35, exit code 1, cmd /tmp/w/ws/src/turtlebot_lab/scripts/talker.py].
+log file: /tmp/w/home/.ros/log/x/talker-3*.log
+[turtlebot_controller-4] process has died [pid 40, exit code 1].
+ZeroDivisionError: division by zero
+'''
+
+
+def test_the_first_node_to_die_and_its_last_error_line(tmp_path):
+    assert talker_failure(DIED, str(tmp_path)) == "NameError: name 'raw_input' is not defined"
+
+
+def test_its_own_log_file_first(tmp_path):
+    logs = tmp_path / 'home' / '.ros' / 'log' / 'run'
+    logs.mkdir(parents=True)
+    (logs / 'talker-3-stdout.log').write_text('Traceback:\nEOFError: EOF when reading a line\n')
+    (logs / 'sim-2.log').write_text('RuntimeError: not the talker\n')
+    os.mkfifo(str(logs / 'talker-3-trap.log'))          # never opened: it would block
+    assert talker_failure(DIED, str(tmp_path)) == 'EOFError: EOF when reading a line'
+
+
+def test_no_death_the_last_error_anywhere_or_nothing(tmp_path):
+    assert talker_failure('ValueError: bad\nall fine\n', str(tmp_path)) == 'ValueError: bad'
+    assert talker_failure('all fine\n', str(tmp_path)) == ''
+
+
+def test_why_the_lab_did_not_come_up():
+    refused = 'ERROR: cannot launch node of type [p/controler.py]: Cannot locate node\n'
+    graph = dict(kind='graph', t=0, simulator=['/sim'], chatter_subscribers=[])
+    assert why_not_launched(refused, []).startswith('cannot launch node of type [p/controler.py]')
+    assert why_not_launched('', []) == 'no ROS master came up'
+    assert why_not_launched('', [dict(graph, simulator=[])]) == 'turtlesim did not start'
+    assert 'no node subscribed to /chatter' in why_not_launched('', [graph])
