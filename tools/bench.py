@@ -407,7 +407,7 @@ def main():
     graded = {}
     if args.grade_class:
         print(f'bench: grade_class.py, a class of {args.grade_class}...', flush=True)
-        graded['grade_class'] = class_run(int(args.grade_class))
+        graded['grade_class'] = class_run(int(args.grade_class), args.out)
     if args.fairness == 'yes':
         print("bench: the lab's submission graded alone, 3 times...", flush=True)
         graded['grade_alone'] = alone_runs()

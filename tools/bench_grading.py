@@ -43,11 +43,14 @@ def _row(out, student):
         return next(r for r in csv.DictReader(f) if r['id'] == student)
 
 
-def class_run(students, jobs=2):
-    """Grade `students` copies of the models; minutes, and each one's overhead."""
+def class_run(students, keep, jobs=2):
+    """Grade `students` copies of the models; minutes, and each one's
+    overhead. The grades stay in `keep`/grade_class, to look at."""
     top = tempfile.mkdtemp(prefix='bench_class_')
+    out = os.path.join(keep, 'grade_class')
+    shutil.rmtree(out, ignore_errors=True)
     try:
-        subs, out = os.path.join(top, 'submissions'), os.path.join(top, 'out')
+        subs = os.path.join(top, 'submissions')
         with open(os.path.join(top, 'roster.csv'), 'w') as f:
             f.write('id,name\n')
             for i in range(students):
@@ -65,14 +68,16 @@ def class_run(students, jobs=2):
         for i in range(students):
             student = f's{i + 1:02}_{MODELS[i % len(MODELS)][0]}'
             data, board = _results(out, student)
-            overheads.append(data['execution_time'] - board.get('drawing time (s)', 0.0))
+            overheads.append((data['execution_time'] - board.get('drawing time (s)', 0.0),
+                              student))
             if student.endswith(LAB):
                 row = _row(out, student)
                 lab.append(dict(verdict=row['verdict'], drawn=row['drawn'],
                                 fit_pct=board.get('worst deviation (% of height)')))
+        worst = max(overheads)
         return dict(students=students, jobs=jobs, minutes=minutes,
-                    overhead_median_s=statistics.median(overheads),
-                    overhead_worst_s=max(overheads), lab_in_class=lab)
+                    overhead_median_s=statistics.median(o for o, _ in overheads),
+                    overhead_worst_s=worst[0], overhead_worst_student=worst[1], lab_in_class=lab)
     finally:
         shutil.rmtree(top, ignore_errors=True)
 
@@ -102,7 +107,8 @@ def grading_lines(results):
             f"grade_class.py, {c['students']} students, --jobs {c['jobs']}: "
             f"{c['minutes']:.1f}{'!' if c['minutes'] > CLASS_TARGET_MIN * c['students'] / 30 else ''}"
             f" min; beyond each drawing median {c['overhead_median_s']:.1f} s, worst "
-            f"{c['overhead_worst_s']:.1f}{'!' if c['overhead_worst_s'] > OVERHEAD_TARGET_S else ''} s")
+            f"{c['overhead_worst_s']:.1f}{'!' if c['overhead_worst_s'] > OVERHEAD_TARGET_S else ''} s "
+            f"({c['overhead_worst_student']})")
     alone = results.get('grade_alone')
     if alone and c:
         fits = [r['fit_pct'] for r in alone]

@@ -145,6 +145,24 @@ def test_gradescope_mode_writes_its_results_where_gradescope_reads_them(tmp_path
     assert {'drawing time (s)', 'cmd_vel rate (/s)'} <= {b['name'] for b in results['leaderboard']}
 
 
+def test_no_sandbox_in_a_container_that_is_one_already(tmp_path):
+    """--no-sandbox as in Gradescope's container: here the container is a
+    bubblewrap sandbox of the test's own (the system read-only, no network
+    but its loopback), since no submission runs unsandboxed, even here."""
+    out = tmp_path / 'out'
+    out.mkdir()
+    container = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc',
+                 '--tmpfs', '/tmp', '--bind', str(out), str(out), '--unshare-net',
+                 '--unshare-pid', '--die-with-parent', '--']
+    done = subprocess.run(container + ['rosrun', 'turtle_letters', 'grade_class.py', '--one',
+                                       os.path.join(SUBMISSIONS, 'x_late'), '--letter', 'I',
+                                       '--rubric', RUBRIC, '--out', str(out), '--no-sandbox'],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, env=readable_env(), timeout=300)
+    assert done.returncode == 0, done.stdout[-2000:]
+    assert '[no sandbox: nothing isolated] x_late' in done.stdout
+
+
 @pytest.mark.parametrize('args, says', [
     (['--roster', '/nonexistent.csv'], 'No such file'),
     (['--roster', __file__], 'header with id,name'),

@@ -13,6 +13,7 @@ import argparse
 import concurrent.futures
 import json
 import os
+import queue
 import shutil
 import sys
 import tempfile
@@ -65,14 +66,27 @@ def default_rubric():
     return os.path.join(rospkg.RosPack().get_path('turtle_letters'), 'config', 'rubric.yaml')
 
 
-def facts_of(student, rubric, work, hidden, isolated):
+class Place:
+    """Where submissions run: what they must not see, whether in a sandbox,
+    and a core each for the `jobs` graded at once (alone: a core too, so
+    that a grade does not depend on who is graded beside it)."""
+
+    def __init__(self, hidden, isolated, jobs):
+        self.hidden, self.isolated = hidden, isolated
+        cores = sorted(os.sched_getaffinity(0))
+        self.cores = queue.Queue()
+        for i in range(jobs):
+            self.cores.put(cores[i % len(cores)])
+
+
+def facts_of(student, rubric, work, place, cpu):
     """Run the student's submission and say what happened."""
     if student.folder is None:
         return rubrics.Facts(student.expected, 'no submission', *[None] * 6), []
     package = submission.find(student.folder)
     if package.problem:
         return rubrics.Facts(student.expected, package.problem, *[None] * 6), []
-    run = session.run(package, work, rubric.limits, hidden, isolated)
+    run = session.run(package, work, rubric.limits, place.hidden, place.isolated, cpu)
     drawing = reading = None
     if run.trigger is not None:
         drawing = seen.drawing(run.events, run.since, rubric.limits.settle, run.finished)
@@ -82,14 +96,15 @@ def facts_of(student, rubric, work, hidden, isolated):
     return facts, run
 
 
-def grade_student(student: Student, rubric, out, hidden, isolated, warning=''):
+def grade_student(student: Student, rubric, out, place, warning=''):
     """One student's row; their results.json and log.txt written (the picture: later)."""
     started = time.monotonic()
     os.makedirs(reports.folder(out, student.id), exist_ok=True)
-    work = tempfile.mkdtemp(prefix='turtle_letters_grade_')
+    work, cpu = tempfile.mkdtemp(prefix='turtle_letters_grade_'), place.cores.get()
     try:
-        facts, run = facts_of(student, rubric, work, hidden, isolated)
+        facts, run = facts_of(student, rubric, work, place, cpu)
     finally:
+        place.cores.put(cpu)
         shutil.rmtree(work, ignore_errors=True)
     graded = rubrics.grade(facts, rubric)
     drawn = (facts.reading.letter or '') if facts.reading else ''
@@ -134,7 +149,8 @@ def draw_picture(out, row, facts):
 
 def say(row, isolated):
     g = row.grade
-    print(('' if isolated else '[no sandbox: nothing isolated] ') + f'{row.id} {row.name}: drew {row.drawn or "no letter"}, expected '
+    print(('' if isolated else '[no sandbox: nothing isolated] ') +
+          f'{row.id} {row.name}: drew {row.drawn or "no letter"}, expected '
           f'{row.expected or "?"}: {g.score:g}/{g.max_score:g} {g.verdict.upper()}: {g.reason}',
           flush=True)
 
@@ -143,8 +159,9 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     """Every student's row, in roster order, `args.jobs` at a time."""
     warnings = warnings or {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = [pool.submit(grade_student, s, rubric, out, hidden, args.isolated,
-                               warnings.get(s.id, '')) for s in students]
+        place = Place(hidden, args.isolated, args.jobs)
+        futures = [pool.submit(grade_student, s, rubric, out, place, warnings.get(s.id, ''))
+                   for s in students]
         rows = []
         for future in futures:
             row, facts = future.result()

@@ -1,7 +1,8 @@
 """What the watcher saw of a submission's run, made sense of. No ROS here.
 
-Events are the watcher's JSON lines as dicts: 'pose', 'cmd_vel', 'chatter',
-'published' and 'graph', each with `t` (s, the grader's monotonic clock).
+Events are the watcher's JSON lines as dicts: 'pose', 'cmd_vel' (a count
+of commands), 'chatter', 'published' and 'graph', each with `t` (s, the
+grader's monotonic clock).
 Only poses from the simulator count: poses on the turtle's topic from any
 other node are made up, and a step no command could make is a teleport.
 """
@@ -12,6 +13,7 @@ TICK = 0.016            # s: turtlesim advances each turtle by this step, once a
 STEP_SLACK = 0.01       # m a step may exceed what the commanded speed allows
 SLOW_TICKS = 1.5        # ticks' worth of travel allowed between two poses, beyond those that came
 JUMP = 0.001            # m between two poses that is a move, speed or no speed
+COUNTED = 0.1           # s: the watcher reports the commands it counted this often
 
 
 class Drawing(NamedTuple):
@@ -21,13 +23,14 @@ class Drawing(NamedTuple):
     commands: int               # cmd_vel messages from the first move to the end
     made_up: List[str]          # nodes other than the simulator that published poses
     teleports: List[tuple]      # (t, metres) of each step no command could make
+    last: Optional[float] = None    # t of the last pose drawn
 
     @property
     def seconds(self):
+        """How long the turtle drew: to its end, or to the last pose seen."""
         if self.started is None:
             return 0.0
-        last = self.ended if self.ended is not None else self.started
-        return max(last - self.started, 0.0)
+        return max((self.ended if self.ended is not None else self.last) - self.started, 0.0)
 
 
 def simulator(events):
@@ -47,16 +50,17 @@ def poses(events, since=-math.inf):
     return [e for e in events if e['kind'] == 'pose' and e['t'] >= since]
 
 
+def moving(pose, before):
+    """Whether the turtle moved to `pose`: it has a speed, or it stands
+    elsewhere than the pose `before` it (a teleport has no speed)."""
+    jumped = before is not None and (abs(pose['x'] - before['x']) > JUMP or
+                                     abs(pose['y'] - before['y']) > JUMP)
+    return bool(pose['v'] or pose['w'] or jumped)
+
+
 def marked(sim_poses):
-    """(pose, moving) for each pose: moving when it has a speed, or when it
-    stands elsewhere than the pose before (a teleport has no speed)."""
-    marks, before = [], None
-    for p in sim_poses:
-        jumped = before is not None and (abs(p['x'] - before['x']) > JUMP or
-                                         abs(p['y'] - before['y']) > JUMP)
-        marks.append((p, bool(p['v'] or p['w'] or jumped)))
-        before = p
-    return marks
+    """(pose, moving) for each pose."""
+    return [(p, moving(p, before)) for p, before in zip(sim_poses, [None] + sim_poses[:-1])]
 
 
 def simulator_poses(events, since=-math.inf, until=math.inf):
@@ -69,13 +73,24 @@ def moved(events, since, until=math.inf):
     return any(m for _, m in marked(simulator_poses(events, since, until))[1:])
 
 
-def still_since(events, since):
-    """t from which the simulator's turtle has stood still (after `since`), or None."""
-    marks = marked(simulator_poses(events, since))
-    if not marks or marks[-1][1]:
-        return None
-    last_move = next((p['t'] for p, m in reversed(marks[1:]) if m), None)
-    return last_move if last_move is not None else marks[0][0]['t']
+def stood_for(events, since):
+    """How long, by its last pose, the simulator's turtle has stood still
+    since it last moved after `since`; None if it has not moved since.
+    Reads back from the newest event only as far as that last move."""
+    graph = last_graph(events)
+    sim = set(graph['simulator']) if graph else set()
+    newest = later = None
+    for e in reversed(events):
+        if e['t'] < since:
+            break
+        if e['kind'] != 'pose' or e['sender'] not in sim:
+            continue
+        if later is None:
+            newest = e['t']
+        elif moving(later, e):
+            return newest - later['t']
+        later = e
+    return None
 
 
 def trigger(events, since, by_grader=False):
@@ -120,7 +135,8 @@ def drawing(events, since, settle, until=math.inf) -> Drawing:
     drawn = [p for p, _ in marks[first - 1:(end if end is not None else len(marks) - 1) + 1]]
     started = marks[first][0]['t']
     ended = marks[end][0]['t'] if end is not None else None
-    commands = sum(1 for e in events if e['kind'] == 'cmd_vel'
-                   and started <= e['t'] <= (ended if ended is not None else until))
+    last = drawn[-1]['t']
+    commands = sum(e['count'] for e in events if e['kind'] == 'cmd_vel'
+                   and started <= e['t'] <= (ended if ended is not None else last) + COUNTED)
     return Drawing([(p['x'], p['y']) for p in drawn], started, ended, commands, made_up,
-                   teleports(drawn))
+                   teleports(drawn), last)

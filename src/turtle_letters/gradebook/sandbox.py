@@ -68,8 +68,11 @@ class Sandbox:
     """A network namespace with loopback up, and commands to run in it:
     `inside` for the submission's, in bubblewrap; `beside` for the grader's."""
 
-    def __init__(self, work, hidden=(), isolated=True):
+    def __init__(self, work, hidden=(), isolated=True, cpu=None):
         self.work, self.isolated = os.path.abspath(work), isolated
+        # One core of its own for the submission and its watcher, alone or
+        # beside others: a busy loop beside it cannot slow its simulator.
+        self.pinned = ['taskset', '-c', str(cpu)] if cpu is not None else []
         self.hidden = [os.path.abspath(h) for h in hidden if os.path.exists(h)]
         self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
         port = MASTER_PORT if isolated else _free_port()
@@ -89,13 +92,14 @@ class Sandbox:
 
     def beside(self, argv):
         if not self.isolated:
-            return list(argv)
-        return ['ip', 'netns', 'exec', self.namespace] + list(argv)
+            return self.pinned + list(argv)
+        return self.pinned + ['ip', 'netns', 'exec', self.namespace] + list(argv)
 
     def inside(self, argv, env):
         """`argv` in the sandbox, with only `env` set."""
         if not self.isolated:
-            return ['env', '-i'] + [f'{k}={v}' for k, v in sorted(env.items())] + list(argv)
+            return self.pinned + ['env', '-i'] + [f'{k}={v}' for k, v in sorted(env.items())] + \
+                list(argv)
         rules = [option for options, _ in RULES for option in options]
         for path in self.hidden:
             rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]

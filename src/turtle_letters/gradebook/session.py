@@ -168,11 +168,11 @@ def wait_until(condition, seconds, alive=lambda: True):
     return bool(condition())
 
 
-def run(package: Package, work, limits: Limits, hidden=(), isolated=True) -> Run:
-    """Build, launch, type P, watch: the whole run of one submission."""
+def run(package: Package, work, limits: Limits, hidden=(), isolated=True, cpu=None) -> Run:
+    """Build, launch, type P, watch: the whole run of one submission (on core `cpu`)."""
     result = Run(package)
     prepare(package, work)
-    with Sandbox(work, hidden, isolated) as box:
+    with Sandbox(work, hidden, isolated, cpu) as box:
         result.build, output = build(box, work, limits)
         result.log.append(('catkin_make', output))
         if result.build.ok:
@@ -237,5 +237,5 @@ def _lab_up(events):
 
 
 def _stood(events, since, settle):
-    still = seen.still_since(events, since)
-    return still is not None and time.monotonic() - still >= settle
+    still = seen.stood_for(events, since)
+    return still is not None and still >= settle

@@ -2,7 +2,7 @@
 which poses count, and which steps no command could make."""
 import pytest
 
-from turtle_letters.gradebook.observations import TICK, drawing, moved, still_since, trigger
+from turtle_letters.gradebook.observations import TICK, drawing, moved, stood_for, trigger
 
 SIM = '/turtlesim'
 
@@ -37,7 +37,7 @@ def test_a_drawing_runs_from_the_first_move_after_the_trigger_to_standing_still(
 def test_a_turtle_still_moving_has_not_ended():
     events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 8.0)
     assert drawing(events, since=0.5, settle=2.0).ended is None
-    assert still_since(events, 0.5) is None
+    assert stood_for(events, 0.5) == 0.0
     assert moved(events, 0.5)
 
 
@@ -71,3 +71,19 @@ def test_the_trigger_is_the_cadets_p_unless_the_grader_sent_it():
     assert trigger(events, 0.0) == 3.0
     assert trigger(events, 0.0, by_grader=True) == 1.0
     assert trigger(events, 3.5) is None
+
+
+def test_the_commands_counted_while_the_turtle_drew():
+    counts = [dict(kind='cmd_vel', t=t, count=10) for t in (0.5, 1.5, 1.9, 4.0)]
+    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0) + standing(2.01, 3, 6.0) + counts
+    assert drawing(events, since=0.5, settle=2.0).commands == 20
+
+
+def test_the_drawing_ends_when_the_watch_says_so_and_not_before():
+    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0)
+    assert stood_for(events, 0.5) == 0.0 and stood_for(events, 3.0) is None
+    for pose_ in standing(2.01, 3, 6.0):
+        events.append(pose_)
+        still = stood_for(events, 0.5)
+        ended = drawing(events, since=0.5, settle=2.0).ended is not None
+        assert ended == (still >= 2.0), (pose_['t'], still)
