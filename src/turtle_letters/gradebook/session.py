@@ -7,8 +7,10 @@ for the rubric to score; nothing here decides points.
 import json
 import os
 import pty
+import shutil
 import signal
 import subprocess
+import tempfile
 import threading
 import time
 from typing import NamedTuple
@@ -131,14 +133,19 @@ class Terminal:
 
 
 class Watcher:
-    """watch.py in the submission's network namespace: its events, as they come."""
+    """watch.py in the submission's network namespace: its events, as they
+    come. Its ROS home and its errors are in a folder of the grader's own,
+    which the submission cannot reach."""
 
     def __init__(self, box):
+        self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
         env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
-                   PYTHONUNBUFFERED='1')
+                   ROS_HOME=self.home, PYTHONUNBUFFERED='1')
+        env.pop('ROS_LOG_DIR', None)
+        self.errors = open(os.path.join(self.home, 'errors.txt'), 'w+')
         self.process = subprocess.Popen(
             box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
-            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env)
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env)
         self.events = []
         threading.Thread(target=self._read, daemon=True).start()
 
@@ -154,8 +161,14 @@ class Watcher:
         self.process.stdin.flush()
 
     def stop(self):
+        """Stops it; what it said on stderr, if anything (its own failure)."""
         self.process.kill()
         self.process.wait()
+        self.errors.seek(0)
+        said = self.errors.read()[-4000:]
+        self.errors.close()
+        shutil.rmtree(self.home, ignore_errors=True)
+        return said
 
 
 def wait_until(condition, seconds, alive=lambda: True):
@@ -191,9 +204,11 @@ def _launch_and_watch(box, work, limits, result):
     finally:
         result.finished = time.monotonic()
         terminal.stop()
-        watcher.stop()
+        watcher_said = watcher.stop()
         result.events = list(watcher.events)
         result.log.append((f'roslaunch {result.package.name} {launch}', terminal.text()))
+        if watcher_said.strip():
+            result.log.append(("the grader's watcher (not the submission's)", watcher_said))
 
 
 def _watch(terminal, watcher, limits, result, work):
