@@ -11,12 +11,15 @@ ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
 LOG_TAIL = 20000        # bytes read of a node's log file, from its end
 
 
-def why_not_launched(output, events):
+def why_not_launched(output, events, work):
     """Why the lab's graph did not come up, in one line."""
     refused = [line for line in output.splitlines() if line.startswith('ERROR: cannot launch')]
     graph = seen.last_graph(events)
     if refused:
         return refused[0][len('ERROR: '):]
+    died = first_death(output, work)
+    if died and graph is not None:
+        return died
     if graph is None:
         return last_error(output) or 'no ROS master came up'
     if not graph['simulator']:
@@ -50,13 +53,25 @@ def _tail(path):
         return f.read().decode('utf-8', 'replace')
 
 
-def talker_failure(output, work):
-    """Why the talker said nothing: the last error line of the first node
-    roslaunch saw die (from its log, else from the terminal before it died),
-    else the last error line anywhere."""
+def first_death(output, work):
+    """'NODE died: its last error line', for the first node roslaunch saw
+    die (the line from its log, else from the terminal before it died), or ''."""
     died = re.search(r'^\[(\S+?)(-\d+)?\] process has died', output, re.MULTILINE)
-    if died:
-        node = died.group(1)
-        return (last_error(node_logs(work, node)) or last_error(output[:died.start()])
-                or f'{node} died')
-    return last_error(output, node_logs(work))
+    if not died:
+        return ''
+    node = died.group(1)
+    why = last_error(node_logs(work, node)) or last_error(output[:died.start()])
+    return f'{node} died' + (f': {why}' if why else '')
+
+
+def talker_failure(output, work):
+    """Why the talker said nothing: the first node to die and its error
+    line, else the last error line anywhere."""
+    return first_death(output, work) or last_error(output, node_logs(work))
+
+
+def why_still(output, work, listeners):
+    """Why the turtle never moved after the trigger: a node that died after
+    it, else the last error line of the nodes that listen on /chatter."""
+    return first_death(output, work) or last_error(
+        output, *[node_logs(work, name.rsplit('/', 1)[-1]) for name in listeners])

@@ -45,6 +45,7 @@ class Facts(NamedTuple):
     talker: object
     drawing: Optional[Drawing]
     reading: Optional[Reading]
+    stuck: str = ''                 # why the turtle never moved after the trigger, if known
 
 
 class Mark(NamedTuple):
@@ -135,7 +136,8 @@ def _accuracy(facts, rubric):
 def _ends(facts, rubric):
     d = facts.drawing
     if d is None or d.started is None:
-        return 0.0, 'the turtle never moved after the trigger'
+        return 0.0, 'the turtle never moved after the trigger' + (
+            f': {facts.stuck}' if facts.stuck else '')
     if d.ended is None:
         return 0.0, (f'the turtle was still moving {rubric.limits.drawing:g} s after it started: '
                      f'the drawing never ended')

@@ -16,7 +16,7 @@ import time
 from typing import NamedTuple
 
 from . import observations as seen
-from .failures import talker_failure, why_not_launched
+from .failures import talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu
 from .reports import plain
 from .rubric import Limits
@@ -45,6 +45,7 @@ class Run:
         self.build = self.launch = self.waited = self.talker = None
         self.events, self.trigger, self.cpu_pct = [], None, None
         self.since = None       # t from which the drawing is looked for
+        self.stuck = ''         # why the turtle never moved after the trigger, if it did not
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
 
@@ -215,7 +216,7 @@ def _watch(terminal, watcher, limits, result, work):
     events, alive = watcher.events, lambda: terminal.process.poll() is None
     started = time.monotonic()
     if not wait_until(lambda: _lab_up(events), limits.launch, alive):
-        result.launch = Step(False, why_not_launched(terminal.text(), events))
+        result.launch = Step(False, why_not_launched(terminal.text(), events, work))
         return
     up = time.monotonic()
     listeners = ', '.join(seen.last_graph(events)['chatter_subscribers'])
@@ -226,6 +227,7 @@ def _watch(terminal, watcher, limits, result, work):
     result.waited = Step(not moved, 'the turtle moved before the trigger' if moved else
                          f'the turtle stood still for {limits.stand:g} s until the trigger')
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
+    shown = len(terminal.text())
     terminal.type(b'P')
     time.sleep(0.2)
     terminal.type(b'\r')
@@ -242,6 +244,9 @@ def _watch(terminal, watcher, limits, result, work):
     since = result.since = up if moved else result.trigger
     if wait_until(lambda: seen.moved(events, since), limits.start, alive):
         wait_until(lambda: _stood(events, since, limits.settle), limits.drawing, alive)
+    else:
+        result.stuck = why_still(terminal.text()[shown:], work,
+                                 seen.last_graph(events)['chatter_subscribers'])
     result.cpu_pct = cpu.share()
 
 

@@ -15,15 +15,18 @@ class Package(NamedTuple):
     folder: str             # where package.xml is
     launch: Optional[str]   # the launch file, relative to `folder`
     problem: str            # why it cannot be run, or ''
+    others: List[str] = []  # the submission's other packages' folders, built beside it
 
 
 def package_folders(top):
-    """Folders under `top` holding a package.xml, shallowest first."""
+    """Folders under `top` holding a package.xml (not those inside one, as
+    catkin looks), shallowest first."""
     found = []
     for folder, folders, files in os.walk(top):
         folders[:] = sorted(f for f in folders if f not in SKIPPED)
         if 'package.xml' in files:
             found.append(folder)
+            folders[:] = []
     return sorted(found, key=lambda f: (f.count(os.sep), f))
 
 
@@ -49,36 +52,46 @@ def nodes(launch_root) -> List[tuple]:
 
 
 def lab_launch(folder):
-    """The launch file that starts turtlesim and a node of another package
-    (the cadet's controller); else one with turtlesim; else the first."""
-    candidates = [(f, _xml(os.path.join(folder, f))) for f in launch_files(folder)]
-    ranked = []
-    for name, root in candidates:
+    """(rank, file): the launch file that starts turtlesim and a node of
+    another package (the cadet's controller), rank 0; else one with
+    turtlesim, or with another node; else the first; (4, None) for none."""
+    ranked = [(4, None)]
+    for name in launch_files(folder):
+        root = _xml(os.path.join(folder, name))
         started = nodes(root) if root is not None else []
         has_sim = any(pkg == 'turtlesim' for pkg, _ in started)
         has_other = any(pkg != 'turtlesim' for pkg, _ in started)
-        ranked.append((-(2 * has_sim + has_other + (has_sim and has_other)), name))
-    return min(ranked)[1] if ranked else None
+        ranked.append((3 - 2 * has_sim - has_other, name))
+    return min(ranked, key=lambda r: (r[0], r[1] or ''))
+
+
+def package_name(folder):
+    root = _xml(os.path.join(folder, 'package.xml'))
+    return root.findtext('name', '').strip() if root is not None else ''
 
 
 def find(top) -> Package:
-    """The submission's package: the shallowest package.xml under `top`."""
+    """The submission's package: of the package.xml under `top`, the one
+    whose launch file starts turtlesim and a controller, the shallowest
+    first; its other packages are built beside it."""
     folders = package_folders(top)
     if not folders:
         return Package('', '', None, f'no package.xml in {top}')
-    folder = folders[0]
-    root = _xml(os.path.join(folder, 'package.xml'))
-    name = root.findtext('name', '').strip() if root is not None else ''
+    folder = min(folders, key=lambda f: (lab_launch(f)[0], f.count(os.sep), f))
+    others = [f for f in folders if f != folder and package_name(f)]
+    name = package_name(folder)
     if not name:
         return Package('', folder, None, f'{os.path.join(folder, "package.xml")} names no package')
-    launch = lab_launch(folder)
+    launch = lab_launch(folder)[1]
     problem = '' if launch else f'no launch file in {folder}'
-    return Package(name, folder, launch, problem)
+    return Package(name, folder, launch, problem, others)
 
 
 def copy(package: Package, workspace):
-    """The package copied into `workspace`/src (links copied as links, never followed)."""
-    target = os.path.join(workspace, 'src', package.name)
-    shutil.copytree(package.folder, target, symlinks=True,
-                    ignore=shutil.ignore_patterns(*SKIPPED))
-    return target
+    """The package, and the submission's others, copied into `workspace`/src
+    (links copied as links, never followed)."""
+    targets = [package.name] + [f'other{i}' for i in range(1, len(package.others) + 1)]
+    for folder, target in zip([package.folder] + package.others, targets):
+        shutil.copytree(folder, os.path.join(workspace, 'src', target), symlinks=True,
+                        ignore=shutil.ignore_patterns(*SKIPPED))
+    return os.path.join(workspace, 'src', package.name)

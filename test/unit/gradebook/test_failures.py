@@ -2,7 +2,7 @@
 and from the nodes' log files."""
 import os
 
-from turtle_letters.gradebook.failures import talker_failure, why_not_launched
+from turtle_letters.gradebook.failures import talker_failure, why_not_launched, why_still
 
 # roslaunch's terminal as the lab's talker dies under Python 3
 DIED = '''process[sim-2]: started with pid [34]
@@ -20,7 +20,7 @@ ZeroDivisionError: division by zero
 
 
 def test_the_first_node_to_die_and_its_last_error_line(tmp_path):
-    assert talker_failure(DIED, str(tmp_path)) == "NameError: name 'raw_input' is not defined"
+    assert talker_failure(DIED, str(tmp_path)) == "talker died: NameError: name 'raw_input' is not defined"
 
 
 def test_its_own_log_file_first(tmp_path):
@@ -29,7 +29,7 @@ def test_its_own_log_file_first(tmp_path):
     (logs / 'talker-3-stdout.log').write_text('Traceback:\nEOFError: EOF when reading a line\n')
     (logs / 'sim-2.log').write_text('RuntimeError: not the talker\n')
     os.mkfifo(str(logs / 'talker-3-trap.log'))          # never opened: it would block
-    assert talker_failure(DIED, str(tmp_path)) == 'EOFError: EOF when reading a line'
+    assert talker_failure(DIED, str(tmp_path)) == 'talker died: EOFError: EOF when reading a line'
 
 
 def test_no_death_the_last_error_anywhere_or_nothing(tmp_path):
@@ -40,7 +40,19 @@ def test_no_death_the_last_error_anywhere_or_nothing(tmp_path):
 def test_why_the_lab_did_not_come_up():
     refused = 'ERROR: cannot launch node of type [p/controler.py]: Cannot locate node\n'
     graph = dict(kind='graph', t=0, simulator=['/sim'], chatter_subscribers=[])
-    assert why_not_launched(refused, []).startswith('cannot launch node of type [p/controler.py]')
-    assert why_not_launched('', []) == 'no ROS master came up'
-    assert why_not_launched('', [dict(graph, simulator=[])]) == 'turtlesim did not start'
-    assert 'no node subscribed to /chatter' in why_not_launched('', [graph])
+    assert why_not_launched(refused, [], '').startswith('cannot launch node of type [p/controler.py]')
+    assert why_not_launched('', [], '') == 'no ROS master came up'
+    assert why_not_launched('', [dict(graph, simulator=[])], '') == 'turtlesim did not start'
+    assert 'no node subscribed to /chatter' in why_not_launched('', [graph], '')
+    assert why_not_launched(DIED, [graph], '') == \
+        "talker died: NameError: name 'raw_input' is not defined"
+
+
+def test_why_the_turtle_never_moved(tmp_path):
+    logs = tmp_path / 'home' / '.ros' / 'log' / 'run'
+    logs.mkdir(parents=True)
+    (logs / 'k_drawer-4.log').write_text('[rospy] bad callback\nTypeError: unsupported operand\n')
+    assert why_still('', str(tmp_path), ['/k_drawer']) == 'TypeError: unsupported operand'
+    died = '[k_drawer-4] process has died [pid 9, exit code 1].\n'
+    assert why_still('KeyError: 3\n' + died, str(tmp_path), []) == \
+        'k_drawer died: TypeError: unsupported operand'

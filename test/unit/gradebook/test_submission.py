@@ -44,3 +44,17 @@ def test_the_copy_keeps_links_as_links_and_leaves_builds_behind(tmp_path):
     assert os.path.islink(os.path.join(target, 'link'))
     assert not os.path.exists(os.path.join(target, 'build'))
     assert os.path.exists(os.path.join(target, 'launch', 'x.launch'))
+
+
+def test_of_several_packages_the_lab_and_the_others_beside_it(tmp_path):
+    make(tmp_path, {'src/a_msgs/package.xml': PACKAGE.format('a_msgs'),
+                    'src/b_tutorial/package.xml': PACKAGE.format('b_tutorial'),
+                    'src/b_tutorial/launch/t.launch': '<launch><node pkg="x" type="y"/></launch>',
+                    'src/my_lab/package.xml': PACKAGE.format('my_lab'),
+                    'src/my_lab/launch/lab.launch': LAB,
+                    'src/my_lab/inner/package.xml': PACKAGE.format('inner')})
+    package = find(str(tmp_path))
+    assert package.name == 'my_lab'
+    assert sorted(os.path.basename(f) for f in package.others) == ['a_msgs', 'b_tutorial']
+    copy(package, str(tmp_path / 'ws'))
+    assert sorted(os.listdir(tmp_path / 'ws' / 'src')) == ['my_lab', 'other1', 'other2']
