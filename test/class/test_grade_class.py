@@ -124,6 +124,24 @@ def test_nothing_is_left_behind(graded):
     assert leftovers() == ([], [])
 
 
+def test_the_sandbox_is_as_its_rules_say(tmp_path):
+    """What a command inside sees: no capability, the system read-only, the
+    class hidden, only its work folder and /tmp writable, loopback only."""
+    from turtle_letters.gradebook.sandbox import Sandbox
+    work = tmp_path / 'work'
+    work.mkdir()
+    probe = ('grep CapEff /proc/self/status; ls "$0" | wc -l; touch /usr/x 2>&1; '
+             'touch "$1/mine" /tmp/mine && echo wrote; ls /sys/class/net')
+    with Sandbox(str(work), hidden=[SUBMISSIONS]) as box:
+        seen = subprocess.run(box.inside(['bash', '-c', probe, SUBMISSIONS, str(work)],
+                                         {'PATH': '/usr/bin:/bin'}),
+                              stdout=subprocess.PIPE, universal_newlines=True).stdout.split('\n')
+    assert seen[0].split() == ['CapEff:', '0000000000000000']
+    assert seen[1] == '0' and 'Read-only file system' in seen[2] and seen[3] == 'wrote'
+    assert seen[4:] == ['lo', '']
+    assert (work / 'mine').exists() and leftovers()[1] == []
+
+
 def test_one_submission_exits_0_on_pass_and_1_on_fail(tmp_path):
     passed = grade_class('--one', os.path.join(SUBMISSIONS, 'x_late'), '--letter', 'I',
                          '--rubric', RUBRIC, '--out', str(tmp_path / 'a'))

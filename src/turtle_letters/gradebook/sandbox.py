@@ -29,6 +29,7 @@ RULES = [
     (['--tmpfs', '/tmp'], 'a private /tmp'),
     (['--tmpfs', '/root'], "nothing of root's home"),
     (['--tmpfs', '/home'], "nothing of the users' homes"),
+    (['--cap-drop', 'ALL'], 'no capability of root (bubblewrap keeps them for root)'),
     (['--unshare-pid'], 'its own process tree, gone when the sandbox ends'),
     (['--unshare-ipc', '--unshare-uts'], 'no shared memory or host name of the machine'),
     (['--die-with-parent'], 'ends when the grader ends'),
