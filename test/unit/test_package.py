@@ -53,3 +53,22 @@ def test_the_hershey_fonts_files_are_a_run_dependency():
     with open(os.path.join(SRC, 'letters', 'hershey.py')) as f:
         assert '/usr/share/hershey-fonts' in f.read()
     assert 'hershey-fonts-data' in run_dependencies()
+
+
+def test_no_test_submission_shadows_one_of_our_executables():
+    """rosrun and roslaunch look for a node's executable anywhere under the
+    package's folder, test/class/submissions included: a cadet's talker.py
+    there would make `rosrun turtle_letters talker.py` ask which one."""
+    def executables(top, skip=None):
+        found = {}
+        for folder, folders, files in os.walk(top):
+            folders[:] = [f for f in folders if os.path.join(folder, f) != skip]
+            for name in files:
+                if os.access(os.path.join(folder, name), os.X_OK):
+                    found.setdefault(name, []).append(os.path.join(folder, name))
+        return found
+    submissions = os.path.join(PACKAGE, 'test', 'class', 'submissions')
+    ours = executables(os.path.join(PACKAGE, 'scripts'))
+    ours.update(executables(os.path.join(PACKAGE, 'test'), skip=submissions))
+    theirs = executables(submissions)
+    assert sorted(set(ours) & set(theirs)) == []
