@@ -36,6 +36,34 @@ RULES = [
     (['--new-session'], 'cannot type into the terminal the grader runs in'),
 ]
 _NUMBERS = itertools.count(1)
+COVERED = ('/tmp', '/root', '/home')     # the folders RULES covers with empty ones
+ENVIRONMENT = ('CMAKE_PREFIX_PATH', 'ROS_PACKAGE_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH')
+
+
+def underlays(environ):
+    """The folders under COVERED that the ROS environment needs (this
+    package's workspace, and the checkout its links point into), as the
+    top folders holding them: shown read-only in the sandbox."""
+    tops = set()
+    for name in ENVIRONMENT:
+        for entry in filter(None, environ.get(name, '').split(':')):
+            for path in {os.path.abspath(entry), os.path.realpath(entry)} | _link_targets(entry):
+                for covered in COVERED:
+                    if path.startswith(covered + '/'):
+                        tops.add(os.path.join(covered, path[len(covered) + 1:].split('/')[0]))
+    return sorted(t for t in tops if os.path.isdir(t))
+
+
+def _link_targets(folder):
+    """Where the links in `folder`'s packages point (build.sh links this package's parts)."""
+    targets = set()
+    for package in (os.listdir(folder) if os.path.isdir(folder) else []):
+        inside = os.path.join(folder, package)
+        if os.path.isdir(inside) and not os.path.islink(inside):
+            targets.update(os.path.realpath(os.path.join(inside, part))
+                           for part in os.listdir(inside)
+                           if os.path.islink(os.path.join(inside, part)))
+    return targets
 
 
 def problem():
@@ -102,6 +130,8 @@ class Sandbox:
             return self.pinned + ['env', '-i'] + [f'{k}={v}' for k, v in sorted(env.items())] + \
                 list(argv)
         rules = [option for options, _ in RULES for option in options]
+        for path in underlays(os.environ):
+            rules += ['--ro-bind', path, path]
         for path in self.hidden:
             rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]
         rules += ['--bind', self.work, self.work, '--chdir', self.work, '--clearenv']
