@@ -27,16 +27,19 @@ class Spares:
 
     def spawn(self, number, place):
         driver = TurtleDriver(beside(self.settings.turtle, spare_name(self.name, number)))
+        with self._lock:    # noted before it exists: a kill mid-spawn leaves it on record
+            self.note([s.driver.name for s in self.live] + [driver.name])
         try:
             driver.spawn(place[0], place[1], 0.0)
         except rospy.ServiceException as e:
+            with self._lock:
+                self.note([s.driver.name for s in self.live])
             driver.close()
             raise DrawingAborted(spawn_refusal(driver, e, 'the spare turtle ')) from None
         spare = self.Turtle(driver, self.settings, label=f'{driver.name}: ')
         with self._lock:
             self.live.append(spare)
             closed = self._closed
-            self.note([s.driver.name for s in self.live])
         if closed:                      # spawned while the node shut down
             self.remove_all()
             raise DrawingAborted('shutting down')
