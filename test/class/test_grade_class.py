@@ -169,9 +169,13 @@ def test_no_sandbox_in_a_container_that_is_one_already(tmp_path):
     but its loopback), since no submission runs unsandboxed, even here."""
     out = tmp_path / 'out'
     out.mkdir()
+    from turtle_letters.gradebook.sandbox import underlays
     container = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc',
-                 '--tmpfs', '/tmp', '--bind', str(out), str(out), '--unshare-net',
-                 '--unshare-pid', '--die-with-parent', '--']
+                 '--tmpfs', '/tmp']
+    for path in underlays(os.environ):      # a checkout in /tmp, as CI's may be
+        container += ['--ro-bind', path, path]
+    container += ['--bind', str(out), str(out), '--unshare-net', '--unshare-pid',
+                  '--die-with-parent', '--']
     done = subprocess.run(container + ['rosrun', 'turtle_letters', 'grade_class.py', '--one',
                                        os.path.join(SUBMISSIONS, 'x_late'), '--letter', 'I',
                                        '--rubric', RUBRIC, '--out', str(out), '--no-sandbox'],
