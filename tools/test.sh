@@ -1,8 +1,9 @@
 #!/bin/bash
 # `make test`: unit tests (pytest, no ROS), every rostest through catkin, the
-# network tests (pytest, as root), a class graded (pytest, as root), the doc pages' commands, then the workspace tests (pytest, several
-# catkin builds of their own); ends with
-# one line "N passed, N failed" counted over all of them.
+# network tests (pytest, as root), a class graded by grade_class.py (pytest,
+# as root), the doc pages' commands, then the workspace tests (pytest,
+# several catkin builds of their own); ends with one line "N passed,
+# N failed" counted over all of them.
 set -u
 source "$(dirname "$0")/env.sh"
 source_workspace || exit 1
