@@ -92,7 +92,8 @@ def facts_of(student, rubric, work, place, cpu):
         drawing = seen.drawing(run.events, run.since, rubric.limits.settle, run.finished)
         reading = read(drawing.path) if drawing.started is not None else None
     facts = rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
-                          drawing, reading, run.stuck)
+                          drawing, reading, run.stuck, run.limit, seen.own_triggers(run.events),
+                          seen.chatter_peak(run.events))
     return facts, run
 
 

@@ -4,6 +4,7 @@ files are the submission's: read as plain files only (no link, no pipe),
 and only their last part."""
 import os
 import re
+import stat
 
 from . import observations as seen
 
@@ -35,8 +36,11 @@ def last_error(*texts):
 
 
 def node_logs(work, node=''):
-    """The text of the log files of every node (or of `node`) in the sandbox's home."""
+    """The text of the log files of every node (or of `node`) in the sandbox's
+    home, if that lies in the work folder (its folders could be links)."""
     texts, top = [], os.path.join(work, 'home', '.ros', 'log')
+    if not os.path.realpath(top).startswith(os.path.realpath(work) + os.sep):
+        return ''
     for folder, _, files in os.walk(top):
         for name in sorted(files):
             path = os.path.join(folder, name)
@@ -48,9 +52,16 @@ def node_logs(work, node=''):
 
 
 def _tail(path):
-    with open(path, 'rb') as f:
-        f.seek(max(0, os.path.getsize(path) - LOG_TAIL))
-        return f.read().decode('utf-8', 'replace')
+    """The end of a plain file; nothing from a link, a pipe or a device."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError:
+        return ''
+    with os.fdopen(fd, 'rb') as f:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return ''
+        f.seek(max(0, os.fstat(fd).st_size - LOG_TAIL))
+        return f.read(LOG_TAIL).decode('utf-8', 'replace')
 
 
 def first_death(output, work):

@@ -1,10 +1,13 @@
 """What the watcher saw of a submission's run, made sense of. No ROS here.
 
 Events are the watcher's JSON lines as dicts: 'pose', 'cmd_vel' (a count
-of commands), 'chatter', 'published' and 'graph', each with `t` (s, the
-grader's monotonic clock).
+of commands), 'chatter', 'chatter_count', 'canvas' (turtlesim cleared or
+reset), 'published' and 'graph', each with `t` (s, the grader's monotonic
+clock).
 Only poses from the simulator count: poses on the turtle's topic from any
 other node are made up, and a step no command could make is a teleport.
+A "P" counts as the trigger only from a node that does not drive the
+turtle: a controller that publishes its own draws without one.
 """
 import math
 from typing import List, NamedTuple, Optional
@@ -24,6 +27,7 @@ class Drawing(NamedTuple):
     made_up: List[str]          # nodes other than the simulator that published poses
     teleports: List[tuple]      # (t, metres) of each step no command could make
     last: Optional[float] = None    # t of the last pose drawn
+    wiped: List[tuple] = []     # (s into the drawing, 'clear' or 'reset') by turtlesim's word
 
     @property
     def seconds(self):
@@ -93,14 +97,45 @@ def stood_for(events, since):
     return None
 
 
+def controllers(events):
+    """The nodes that published on the turtle's cmd_vel, as the graph reported them."""
+    names = set()
+    for e in events:
+        if e['kind'] == 'graph':
+            names.update(e['cmd_vel_publishers'])
+    return names
+
+
 def trigger(events, since, by_grader=False):
     """t of the first "P" on /chatter after `since`, from the cadet's nodes
-    (or from the grader's watcher, `by_grader`), or None."""
+    that do not drive the turtle (or from the grader's watcher, `by_grader`),
+    or None."""
+    driving = controllers(events)
     for e in events:
         if e['kind'] == 'chatter' and e['t'] >= since and e['data'].strip() == 'P' \
-                and (e['sender'] == '/grade_watch') == by_grader:
+                and (e['sender'] == '/grade_watch') == by_grader and e['sender'] not in driving:
             return e['t']
     return None
+
+
+def own_triggers(events):
+    """The nodes that drive the turtle and also published "P" on /chatter."""
+    driving = controllers(events)
+    return sorted({e['sender'] for e in events if e['kind'] == 'chatter'
+                   and e['data'].strip() == 'P' and e['sender'] in driving})
+
+
+def chatter_peak(events):
+    """The most messages /chatter carried in one of the watcher's counts, per second."""
+    return max((e['count'] for e in events if e['kind'] == 'chatter_count'), default=0) / COUNTED
+
+
+def wiped(events, started, ended):
+    """(s into the drawing, 'clear' or 'reset') for each time turtlesim said
+    it cleared or reset its canvas while the turtle drew."""
+    sim = simulator(events)
+    return [(e['t'] - started, e['what']) for e in events if e['kind'] == 'canvas'
+            and e['sender'] in sim and started <= e['t'] <= ended]
 
 
 def teleports(sim_poses):
@@ -139,4 +174,4 @@ def drawing(events, since, settle, until=math.inf) -> Drawing:
     commands = sum(e['count'] for e in events if e['kind'] == 'cmd_vel'
                    and started <= e['t'] <= (ended if ended is not None else last) + COUNTED)
     return Drawing([(p['x'], p['y']) for p in drawn], started, ended, commands, made_up,
-                   teleports(drawn), last)
+                   teleports(drawn), last, wiped(events, started, last))

@@ -65,7 +65,7 @@ def results_json(row: Row):
     return dict(score=g.score, execution_time=round(row.seconds, 1),
                 output=f'{g.verdict.upper()}: {g.score:g}/{g.max_score:g}. {g.reason}',
                 tests=[dict(name=t.name, score=t.score, max_score=t.max_score,
-                            status='passed' if t.score >= t.max_score else 'failed',
+                            status='passed' if t.met else 'failed',
                             output=t.output) for t in g.tests],
                 leaderboard=[dict(name=n, value=v, order=o) for n, v, o in row.leaderboard])
 
@@ -118,7 +118,7 @@ def write_html(path, rows, title):
 
 
 def _section(row):
-    items = ''.join(f'<li class="{"met" if t.score >= t.max_score else "lost"}">'
+    items = ''.join(f'<li class="{"met" if t.met else "lost"}">'
                     f'{html.escape(t.name)}: {t.score:g}/{t.max_score:g}. {html.escape(t.output)}'
                     f'</li>' for t in row.grade.tests)
     picture = (f'<img src="{urllib.parse.quote(row.picture)}" alt="the path over the letter">'

@@ -9,6 +9,7 @@ from ..grading.recognition import Reading
 from .observations import Drawing
 
 LIMITS = ('build', 'launch', 'stand', 'talker', 'start', 'drawing', 'settle')
+CHATTER_FLOOD = 100     # messages a second on /chatter past which the talker floods it
 
 
 class RubricError(ValueError):
@@ -46,6 +47,9 @@ class Facts(NamedTuple):
     drawing: Optional[Drawing]
     reading: Optional[Reading]
     stuck: str = ''                 # why the turtle never moved after the trigger, if known
+    limit: str = ''                 # the sandbox's limit it reached, in words ('' if none)
+    own_triggers: List[str] = []    # its nodes that drive the turtle and published "P" too
+    chatter_peak: float = 0.0       # the most messages a second on /chatter
 
 
 class Mark(NamedTuple):
@@ -53,6 +57,11 @@ class Mark(NamedTuple):
     score: float
     max_score: float
     output: str
+    broken: bool = False    # a rule broken, whatever the points (the sandbox's limits)
+
+    @property
+    def met(self):
+        return not self.broken and self.score >= self.max_score
 
 
 def _number(value, where):
@@ -109,7 +118,29 @@ def _step(step, before):
     return (1.0 if step.ok else 0.0), step.says
 
 
+def _talker(facts, _):
+    if facts.own_triggers:
+        return 0.0, (f'{", ".join(facts.own_triggers)} drives the turtle and published "P" on '
+                     f'/chatter itself: it draws without the trigger')
+    share, line = _step(facts.talker, 'the launch failed')
+    if facts.chatter_peak > CHATTER_FLOOD:
+        return 0.0, f'{line}, but /chatter was flooded: {facts.chatter_peak:.0f} messages a second'
+    return share, line
+
+
+def _wiped(facts, what):
+    """The line for turtlesim's canvas cleared or reset while the turtle drew, or ''."""
+    d = facts.drawing
+    when = [seconds for seconds, done in (d.wiped if d else []) if done == what]
+    if not when:
+        return ''
+    return (f'turtlesim was {"cleared" if what == "clear" else "reset"} {when[0]:.1f} s into '
+            f'the drawing' + (f' ({len(when)} times)' if len(when) > 1 else ''))
+
+
 def _letter(facts, _):
+    if _wiped(facts, 'clear'):
+        return 0.0, f'{_wiped(facts, "clear")}: the letter on its canvas is not whole'
     reading = facts.reading
     if reading is None or reading.best is None:
         return 0.0, 'nothing was drawn'
@@ -151,6 +182,8 @@ def _driven(facts, _):
     if d.made_up:
         return 0.0, (f'poses of the turtle were published by {", ".join(d.made_up)}, not '
                      f'turtlesim: those poses are not graded')
+    if _wiped(facts, 'reset'):
+        return 0.0, f'{_wiped(facts, "reset")}: the turtle was put back, not driven'
     if d.teleports:
         t, step = max(d.teleports, key=lambda jump: jump[1])
         return 0.0, (f'the turtle jumped {step:.2f} m at once, farther than any command could '
@@ -165,7 +198,7 @@ def _driven(facts, _):
 CRITERIA = {
     'builds': ('It builds', lambda f, r: _step(f.build, f.problem)),
     'launches': ('It launches', lambda f, r: _step(f.launch, 'the build failed')),
-    'talker': ('The talker publishes P on a key press', lambda f, r: _step(f.talker, 'the launch failed')),
+    'talker': ('The talker publishes P on a key press', _talker),
     'waits': ('The turtle waits for the trigger', lambda f, r: _step(f.waited, 'the launch failed')),
     'letter': ('The letter drawn is the expected one', _letter),
     'accuracy': ('Its accuracy', _accuracy),
@@ -183,16 +216,18 @@ class Grade(NamedTuple):
 
 
 def grade(facts: Facts, rubric: Rubric) -> Grade:
-    tests = []
+    """Each criterion's mark; a limit of the sandbox reached fails the submission."""
+    marks = []
     for name, points in rubric.points.items():
         title, judge = CRITERIA[name]
         share, line = judge(facts, rubric)
-        tests.append(Mark(title, round(share * points, 2), points, line))
+        marks.append(Mark(title, round(share * points, 2), points, line))
+    missed = [m for name, m in zip(rubric.points, marks) if name in rubric.required and not m.met]
+    tests = ([Mark("It keeps within the sandbox's limits", 0.0, 0.0, facts.limit, True)]
+             if facts.limit else []) + marks
     score = round(sum(t.score for t in tests), 2)
     total = sum(t.max_score for t in tests)
-    lost = next((t for t in tests if t.score < t.max_score), None)
+    lost = next((t for t in tests if not t.met), None)
     reason = f'{lost.name}: {lost.output}' if lost else 'every criterion met'
-    missed = [t for name, t in zip(rubric.points, tests)
-              if name in rubric.required and t.score < t.max_score]
-    passed = score >= rubric.pass_score and not missed
+    passed = score >= rubric.pass_score and not missed and not facts.limit
     return Grade(tests, score, total, 'pass' if passed else 'fail', reason)

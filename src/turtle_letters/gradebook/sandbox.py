@@ -1,11 +1,12 @@
 """Where a submission's code runs, and nothing of it outside: a network
 namespace of its own with loopback only (so its roscore is its own, on the
-usual port), and in it Debian's bubblewrap with the rules in RULES. The
+usual port), and in it Debian's bubblewrap with the rules in RULES, run as
+an unprivileged user (AS_USER), in a cgroup of its own with LIMITS. The
 grader's watcher (watch.py) joins the namespace, not the sandbox.
 
 `problem()` tries the sandbox out and says in one line what keeps it from
-being made here (no root for the namespace, no bubblewrap, a container that
-forbids namespaces); the grader then refuses to grade. Only `isolated=False`
+being made here (no root for the namespace, no bubblewrap, no cgroup with
+memory and pids, a container that forbids namespaces); the grader then refuses to grade. Only `isolated=False`
 (grade_class.py --no-sandbox, for a container that is a sandbox already,
 as Gradescope's is) runs a submission without one: then each gets a master
 port of its own, and nothing more.
@@ -13,11 +14,15 @@ port of its own, and nothing more.
 import itertools
 import os
 import shutil
+import signal
 import socket
 import subprocess
 import tempfile
+import time
 
 MASTER_PORT = 11311
+USER = 65534            # nobody: the submission's processes run as this user
+GiB = 1024 ** 3
 # What the sandbox sees. The system is read-only; only the work folder
 # (the submission's copy, its build and its home) and a private /tmp are
 # writable; the folders given as `hidden` (the class, the roster, the
@@ -25,16 +30,28 @@ MASTER_PORT = 11311
 RULES = [
     (['--ro-bind', '/', '/'], 'the system, read-only'),
     (['--dev', '/dev'], 'a private /dev'),
+    (['--perms', '1777', '--tmpfs', '/dev/shm'], 'a private /dev/shm, writable'),
     (['--proc', '/proc'], 'its own processes only'),
-    (['--tmpfs', '/tmp'], 'a private /tmp'),
+    (['--perms', '1777', '--tmpfs', '/tmp'], 'a private /tmp, writable'),
     (['--tmpfs', '/root'], "nothing of root's home"),
     (['--tmpfs', '/home'], "nothing of the users' homes"),
-    (['--cap-drop', 'ALL'], 'no capability of root (bubblewrap keeps them for root)'),
     (['--unshare-pid'], 'its own process tree, gone when the sandbox ends'),
     (['--unshare-ipc', '--unshare-uts'], 'no shared memory or host name of the machine'),
     (['--die-with-parent'], 'ends when the grader ends'),
     (['--new-session'], 'cannot type into the terminal the grader runs in'),
 ]
+# Who runs the command inside: an unprivileged user, with no capability
+# (bubblewrap run as root keeps them) and no way to gain one.
+AS_USER = ['setpriv', f'--reuid={USER}', f'--regid={USER}', '--clear-groups',
+           '--inh-caps=-all', '--bounding-set=-all', '--no-new-privs', '--']
+# What all of a submission's processes may use together, counted by a
+# cgroup of its own: memory (files in its /tmp included) and tasks are
+# capped by the kernel; CPU time is watched, and the run stopped at it.
+LIMITS = {
+    'memory': (2 * GiB, lambda n: f'memory limit of {n / GiB:g} GiB reached'),
+    'processes': (256, lambda n: f'process limit of {n} reached (threads count)'),
+    'cpu': (300, lambda n: f'CPU time limit of {n} s reached'),
+}
 _NUMBERS = itertools.count(1)
 COVERED = ('/tmp', '/root', '/home')     # the folders RULES covers with empty ones
 ENVIRONMENT = ('CMAKE_PREFIX_PATH', 'ROS_PACKAGE_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH')
@@ -70,7 +87,7 @@ def problem():
     """What keeps the sandbox from being made here, in one line, or None."""
     if os.geteuid() != 0:
         return 'grading needs root: each submission runs in a network namespace of its own'
-    for tool, package in (('bwrap', 'bubblewrap'), ('ip', 'iproute2')):
+    for tool, package in (('bwrap', 'bubblewrap'), ('ip', 'iproute2'), ('setpriv', 'util-linux')):
         if shutil.which(tool) is None:
             return f'{tool} is not installed (make deps installs {package})'
     work = tempfile.mkdtemp(prefix='turtle_letters_sandbox_check_')
@@ -80,11 +97,151 @@ def problem():
                                    stderr=subprocess.STDOUT, universal_newlines=True)
         if tried.returncode != 0:
             return f'bubblewrap cannot make a sandbox here: {tried.stdout.strip()}'
+    except CgroupError as e:
+        return str(e)
+    except OSError as e:
+        return f'no cgroup for the sandbox\'s limits can be made here: {e}'
     except subprocess.CalledProcessError as e:
         return f'no network namespace can be made here: {e.stderr.strip() if e.stderr else e}'
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return None
+
+
+class CgroupError(OSError):
+    """No cgroup with the memory and pids controllers can be made here."""
+
+
+def _mounts():
+    with open('/proc/self/mounts') as f:
+        return [line.split()[1:4] for line in f]     # (where, type, options)
+
+
+def _own_path(controller):
+    """The grader's own cgroup in a v1 hierarchy (its children nest in it,
+    within whatever limits the grader itself runs under)."""
+    with open('/proc/self/cgroup') as f:
+        for line in f:
+            _, controllers, path = line.rstrip('\n').split(':', 2)
+            if controller in controllers.split(','):
+                return path
+    return '/'
+
+
+def cgroup_parents():
+    """('v2', {controller: folder}) or ('v1', ...): where a submission's
+    cgroups are made: at the top of cgroup v2, when it has memory and pids,
+    else in the grader's own cgroups of v1's memory, pids and cpuacct."""
+    for where, kind, _ in _mounts():
+        if kind == 'cgroup2':
+            try:
+                with open(os.path.join(where, 'cgroup.subtree_control')) as f:
+                    enabled = f.read().split()
+            except OSError:
+                continue
+            if {'memory', 'pids'} <= set(enabled):
+                return 'v2', {c: where for c in ('memory', 'pids', 'cpu')}
+    found = {}
+    for where, kind, options in _mounts():
+        for controller in set(options.split(',')) & {'memory', 'pids', 'cpuacct'}:
+            if kind == 'cgroup':
+                found[controller] = where + _own_path(controller).rstrip('/')
+    if len(found) < 3:
+        raise CgroupError('no cgroup with the memory, pids and cpuacct controllers here '
+                          '(neither cgroup v2 with memory and pids, nor v1 with all three)')
+    return 'v1', found
+
+
+# Where each version sets a limit and says how much was used or refused.
+V2_FILES = dict(memory='memory.max', processes='pids.max', oom='memory.events',
+                refused='pids.events', cpu='cpu.stat')
+V1_FILES = dict(memory='memory.limit_in_bytes', processes='pids.max', oom='memory.oom_control',
+                refused='pids.events', cpu='cpuacct.usage')
+
+
+class Cgroup:
+    """A cgroup of its own for one submission: its memory and tasks capped
+    by the kernel, its CPU time counted, and every process in it killed at
+    the end (with the PID namespace, this catches what double-forked)."""
+
+    def __init__(self, name, limits):
+        self.version, parents = cgroup_parents()
+        self.limits = limits
+        self.folders = {c: os.path.join(p, name) for c, p in parents.items()}
+        self.files = V2_FILES if self.version == 'v2' else V1_FILES
+        for folder in sorted(set(self.folders.values())):
+            os.makedirs(folder, exist_ok=True)
+        self._write('memory', 'memory', limits['memory'][0])
+        swap = 'memory.swap.max' if self.version == 'v2' else 'memory.memsw.limit_in_bytes'
+        if os.path.exists(os.path.join(self.folders['memory'], swap)):
+            self._write('memory', swap, limits['memory'][0] if self.version == 'v1' else 0)
+        self._write('pids', 'processes', limits['processes'][0])
+
+    def _path(self, controller, entry):
+        return os.path.join(self.folders[controller], self.files.get(entry, entry))
+
+    def _write(self, controller, entry, value):
+        with open(self._path(controller, entry), 'w') as f:
+            f.write(str(value))
+
+    def _field(self, controller, entry, field):
+        with open(self._path(controller, entry)) as f:
+            for line in f:
+                words = line.split()
+                if len(words) == 2 and words[0] == field:
+                    return int(words[1])
+        return 0
+
+    def joining(self):
+        """A command prefix that puts itself, and so what it runs, in this cgroup."""
+        procs = [os.path.join(f, 'cgroup.procs') for f in sorted(set(self.folders.values()))]
+        return ['sh', '-c', 'while [ "$1" != -- ]; do echo $$ > "$1" || exit 125; shift; done; '
+                            'shift; exec "$@"', 'join'] + procs + ['--']
+
+    def cpu_seconds(self):
+        if self.version == 'v2':
+            return self._field('cpu', 'cpu', 'usage_usec') / 1e6
+        with open(self._path('cpuacct', 'cpu')) as f:
+            return int(f.read()) / 1e9
+
+    def reached(self):
+        """The words of the first limit the submission reached, or ''."""
+        if self._field('memory', 'oom', 'oom_kill'):
+            return self.limits['memory'][1](self.limits['memory'][0])
+        if self._field('pids', 'refused', 'max'):
+            return self.limits['processes'][1](self.limits['processes'][0])
+        if self.cpu_seconds() >= self.limits['cpu'][0]:
+            return self.limits['cpu'][1](self.limits['cpu'][0])
+        return ''
+
+    def processes(self):
+        pids = set()
+        for folder in set(self.folders.values()):
+            with open(os.path.join(folder, 'cgroup.procs')) as f:
+                pids.update(int(pid) for pid in f.read().split())
+        return pids
+
+    def remove(self):
+        """Kills every process in it, then removes it."""
+        for _ in range(100):
+            left = self.processes()
+            if not left:
+                break
+            for pid in left:
+                try:
+                    os.kill(pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+            time.sleep(0.05)
+        for folder in sorted(set(self.folders.values())):
+            for _ in range(100):
+                try:
+                    os.rmdir(folder)
+                    break
+                except FileNotFoundError:
+                    break
+                except OSError:
+                    time.sleep(0.05)
 
 
 def _free_port():
@@ -94,11 +251,13 @@ def _free_port():
 
 
 class Sandbox:
-    """A network namespace with loopback up, and commands to run in it:
-    `inside` for the submission's, in bubblewrap; `beside` for the grader's."""
+    """A network namespace with loopback up, a cgroup with LIMITS, and
+    commands to run in them: `inside` for the submission's, in bubblewrap
+    as USER; `beside` for the grader's."""
 
-    def __init__(self, work, hidden=(), isolated=True, cpu=None):
+    def __init__(self, work, hidden=(), isolated=True, cpu=None, limits=None):
         self.work, self.isolated = os.path.abspath(work), isolated
+        self.limits = limits or LIMITS
         # One core of its own for the submission and its watcher, alone or
         # beside others: a busy loop beside it cannot slow its simulator.
         self.pinned = ['taskset', '-c', str(cpu)] if cpu is not None else []
@@ -106,18 +265,33 @@ class Sandbox:
         self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
         port = MASTER_PORT if isolated else _free_port()
         self.master_uri = f'http://127.0.0.1:{port}'
+        self.cgroup = None
 
     def __enter__(self):
-        if self.isolated:
-            for command in (['ip', 'netns', 'add', self.namespace],
-                            ['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up']):
-                subprocess.run(command, check=True, stderr=subprocess.PIPE,
-                               universal_newlines=True)
+        if not self.isolated:
+            return self
+        for command in (['ip', 'netns', 'add', self.namespace],
+                        ['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up']):
+            subprocess.run(command, check=True, stderr=subprocess.PIPE, universal_newlines=True)
+        try:
+            self.cgroup = Cgroup(self.namespace, self.limits)
+        except OSError:
+            self.__exit__()
+            raise
+        for folder, folders, files in os.walk(self.work):     # the work folder is USER's
+            for name in [folder] + [os.path.join(folder, n) for n in folders + files]:
+                os.lchown(name, USER, USER)
         return self
 
     def __exit__(self, *_):
+        if self.cgroup is not None:
+            self.cgroup.remove()
         if self.isolated:
             subprocess.run(['ip', 'netns', 'delete', self.namespace], check=False)
+
+    def reached(self):
+        """The words of the first limit the submission reached, or ''."""
+        return self.cgroup.reached() if self.cgroup is not None else ''
 
     def beside(self, argv):
         if not self.isolated:
@@ -137,4 +311,5 @@ class Sandbox:
         rules += ['--bind', self.work, self.work, '--chdir', self.work, '--clearenv']
         for name, value in sorted(env.items()):
             rules += ['--setenv', name, value]
-        return self.beside(['bwrap'] + rules + ['--'] + list(argv))
+        return self.cgroup.joining() + self.beside(['bwrap'] + rules + ['--'] + AS_USER +
+                                                   list(argv))

@@ -46,6 +46,8 @@ class Run:
         self.events, self.trigger, self.cpu_pct = [], None, None
         self.since = None       # t from which the drawing is looked for
         self.stuck = ''         # why the turtle never moved after the trigger, if it did not
+        self.still_from = None  # where in the terminal's text the wait for a first move began
+        self.limit = ''         # the sandbox's limit the submission reached, in words
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
 
@@ -189,7 +191,8 @@ def run(package: Package, work, limits: Limits, hidden=(), isolated=True, cpu=No
     with Sandbox(work, hidden, isolated, cpu) as box:
         result.build, output = build(box, work, limits)
         result.log.append(('catkin_make', output))
-        if result.build.ok:
+        result.limit = box.reached()
+        if result.build.ok and not result.limit:
             _launch_and_watch(box, work, limits, result)
     return result
 
@@ -201,22 +204,25 @@ def _launch_and_watch(box, work, limits, result):
     terminal = Terminal(box.inside(command, _env(work, box.master_uri)), not box.isolated)
     watcher = Watcher(box)
     try:
-        _watch(terminal, watcher, limits, result, work)
+        _watch(terminal, watcher, limits, result,
+               lambda: terminal.process.poll() is None and not box.reached())
     finally:
         result.finished = time.monotonic()
+        result.limit = box.reached()
         terminal.stop()
         watcher_said = watcher.stop()
         result.events = list(watcher.events)
         result.log.append((f'roslaunch {result.package.name} {launch}', terminal.text()))
         if watcher_said.strip():
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
+    _explain(result, terminal.text(), work)
 
 
-def _watch(terminal, watcher, limits, result, work):
-    events, alive = watcher.events, lambda: terminal.process.poll() is None
+def _watch(terminal, watcher, limits, result, alive):
+    events = watcher.events
     started = time.monotonic()
     if not wait_until(lambda: _lab_up(events), limits.launch, alive):
-        result.launch = Step(False, why_not_launched(terminal.text(), events, work))
+        result.launch = Step(False, 'the lab did not come up')
         return
     up = time.monotonic()
     listeners = ', '.join(seen.last_graph(events)['chatter_subscribers'])
@@ -235,9 +241,8 @@ def _watch(terminal, watcher, limits, result, work):
         result.trigger = seen.trigger(events, typed)
         result.talker = Step(True, f'"P" on /chatter {result.trigger - typed:.1f} s after the key')
     else:
-        why = talker_failure(terminal.text(), work)
         result.talker = Step(False, f'nothing on /chatter within {limits.talker:g} s of P and '
-                                    f'Enter' + (f': {why}' if why else ''))
+                                    f'Enter')
         watcher.publish_p()
         wait_until(lambda: seen.trigger(events, typed, by_grader=True) is not None, 5.0)
         result.trigger = seen.trigger(events, typed, by_grader=True) or time.monotonic()
@@ -245,9 +250,23 @@ def _watch(terminal, watcher, limits, result, work):
     if wait_until(lambda: seen.moved(events, since), limits.start, alive):
         wait_until(lambda: _stood(events, since, limits.settle), limits.drawing, alive)
     else:
-        result.stuck = why_still(terminal.text()[shown:], work,
-                                 seen.last_graph(events)['chatter_subscribers'])
+        result.still_from = shown
     result.cpu_pct = cpu.share()
+
+
+def _explain(result, text, work):
+    """The failures' lines that read the submission's files (its nodes'
+    logs): made only once none of its processes runs, so that none can
+    swap a file for a link or a pipe while the grader reads it."""
+    if result.launch is not None and not result.launch.ok:
+        result.launch = result.launch._replace(says=why_not_launched(text, result.events, work))
+    if result.talker is not None and not result.talker.ok:
+        why = talker_failure(text, work)
+        result.talker = result.talker._replace(says=result.talker.says + (f': {why}' if why else ''))
+    if result.still_from is not None:
+        graph = seen.last_graph(result.events)
+        result.stuck = why_still(text[result.still_from:], work,
+                                 graph['chatter_subscribers'] if graph else [])
 
 
 def _lab_up(events):

@@ -1,13 +1,16 @@
 """The grader's eyes in a submission's network namespace: a node of ours,
 run outside the sandbox, that reports as JSON lines on stdout every pose
 and /chatter message (with the time it came and the node that sent it),
-how many commands came on cmd_vel each COUNT_PERIOD, and, twice a second,
-who publishes and serves what. A line "P" on stdin publishes "P" on
-/chatter. Run as `python3 -m turtle_letters.gradebook.watch`.
+how many commands came on cmd_vel each COUNT_PERIOD, turtlesim's own word
+when its canvas is cleared or reset, and, twice a second, who publishes
+and serves what. A line "P" on stdin publishes "P" on /chatter. Run as
+`python3 -m turtle_letters.gradebook.watch`.
 
 Commands are counted unread (rospy.AnyMsg): a busy-loop controller sends
 thousands a second, and reading each would load the machine that grades,
-and so the drawings of the students graded beside it."""
+and so the drawings of the students graded beside it. For the same reason
+only the first CHATTER_SHOWN messages on /chatter of each COUNT_PERIOD are
+reported one by one; the rest are counted."""
 import json
 import sys
 import threading
@@ -15,12 +18,15 @@ import time
 
 import rosgraph
 import rospy
+from rosgraph_msgs.msg import Log
 from std_msgs.msg import String
 from turtlesim.msg import Pose
 
 NAME = '/grade_watch'
 GRAPH_PERIOD = 0.5      # s between reports of the graph
 COUNT_PERIOD = 0.1      # s between counts of cmd_vel messages
+CHATTER_SHOWN = 5       # /chatter messages reported whole each COUNT_PERIOD
+CANVAS_WORDS = {'Clearing turtlesim.': 'clear', 'Resetting turtlesim.': 'reset'}
 
 
 class Reporter:
@@ -69,8 +75,17 @@ def main():
         sender=sender(m)), queue_size=1000)
     commands = Counter()
     rospy.Subscriber('/turtle1/cmd_vel', rospy.AnyMsg, commands.add, queue_size=1000)
-    rospy.Subscriber('/chatter', String, lambda m: report(
-        'chatter', data=m.data[:80], sender=sender(m)), queue_size=100)
+    chatter_heard = Counter()
+
+    def on_chatter(message):
+        if chatter_heard.add(message) < CHATTER_SHOWN:
+            report('chatter', data=message.data[:80], sender=sender(message))
+
+    def on_log(message):
+        if message.msg in CANVAS_WORDS:
+            report('canvas', what=CANVAS_WORDS[message.msg], sender=sender(message))
+    rospy.Subscriber('/chatter', String, on_chatter, queue_size=100)
+    rospy.Subscriber('/rosout', Log, on_log, queue_size=100)
     chatter = rospy.Publisher('/chatter', String, queue_size=1, latch=True)
     threading.Thread(target=_obey, args=(chatter, report), daemon=True).start()
     next_graph = 0.0
@@ -84,6 +99,9 @@ def main():
         counted = commands.take()
         if counted:
             report('cmd_vel', count=counted)
+        heard = chatter_heard.take()
+        if heard:
+            report('chatter_count', count=heard)
         time.sleep(COUNT_PERIOD)
 
 
@@ -94,8 +112,10 @@ class Counter:
         self.count, self.lock = 0, threading.Lock()
 
     def add(self, _):
+        """Counts one; how many were counted before it in this batch."""
         with self.lock:
             self.count += 1
+            return self.count - 1
 
     def take(self):
         with self.lock:
