@@ -4,7 +4,6 @@ careful instructor concludes, the files handed back, and nothing left
 behind: the submissions unchanged, no process, no network namespace.
 Needs root (each submission gets a network namespace); skipped elsewhere."""
 import csv
-import hashlib
 import json
 import os
 import shutil
@@ -14,6 +13,7 @@ import xml.etree.ElementTree as ElementTree
 import pytest
 
 from support.children import readable_env
+from support.grading import grade_class, leftovers, sandbox_processes, tree_hash
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SUBMISSIONS = os.path.join(HERE, 'submissions')
@@ -39,37 +39,10 @@ CONCLUSIONS = {
 }
 
 
-def tree_hash(top):
-    digest = hashlib.sha256()
-    for folder, folders, files in sorted(os.walk(top)):
-        folders.sort()
-        for name in sorted(files):
-            path = os.path.join(folder, name)
-            digest.update(path.encode() + oct(os.lstat(path).st_mode).encode())
-            with open(path, 'rb') as f:
-                digest.update(f.read())
-    return digest.hexdigest()
-
-
-def grade_class(*args, timeout=900):
-    return subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', *args],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          universal_newlines=True, env=readable_env(), timeout=timeout)
-
-
-def leftovers():
-    """Processes still running from a grading's work folders, and its namespaces."""
-    processes = subprocess.run(['pgrep', '-af', 'turtle_letters_grade_'], stdout=subprocess.PIPE,
-                               universal_newlines=True).stdout.splitlines()
-    namespaces = subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
-                                universal_newlines=True).stdout
-    return processes, [n for n in namespaces.split() if n.startswith('tlgrade')]
-
-
 @pytest.fixture(scope='module')
 def graded(tmp_path_factory):
     out = str(tmp_path_factory.mktemp('grades'))
-    before = tree_hash(SUBMISSIONS)
+    before = tree_hash(SUBMISSIONS), sandbox_processes()
     done = grade_class(SUBMISSIONS, '--roster', ROSTER, '--rubric', RUBRIC, '--out', out,
                        '--jobs', '2')
     return done, out, before
@@ -119,27 +92,31 @@ def test_the_files_handed_back(graded):
 
 
 def test_nothing_is_left_behind(graded):
-    _, _, before = graded
-    assert tree_hash(SUBMISSIONS) == before
-    assert leftovers() == ([], [])
+    _, _, (files, processes) = graded
+    assert tree_hash(SUBMISSIONS) == files
+    assert leftovers(processes) == ([], [])
 
 
 def test_the_sandbox_is_as_its_rules_say(tmp_path):
-    """What a command inside sees: no capability, the system read-only, the
-    class hidden, only its work folder and /tmp writable, loopback only."""
+    """What a command inside sees: an unprivileged user with no capability,
+    the system read-only, root's files unreadable, the class hidden, only
+    its work folder and /tmp writable, loopback only, a cgroup of its own."""
     from turtle_letters.gradebook.sandbox import Sandbox
     work = tmp_path / 'work'
     work.mkdir()
-    probe = ('grep CapEff /proc/self/status; ls "$0" | wc -l; touch /usr/x 2>&1; '
-             'touch "$1/mine" /tmp/mine && echo wrote; ls /sys/class/net')
+    before = sandbox_processes()
+    probe = ('id -u; grep CapEff /proc/self/status; ls "$0" | wc -l; touch /usr/x 2>&1; '
+             'head -c1 /etc/shadow 2>&1; touch "$1/mine" /tmp/mine && echo wrote; '
+             'grep -c tlgrade /proc/self/cgroup; ls /sys/class/net')
     with Sandbox(str(work), hidden=[SUBMISSIONS]) as box:
         seen = subprocess.run(box.inside(['bash', '-c', probe, SUBMISSIONS, str(work)],
                                          {'PATH': '/usr/bin:/bin'}),
                               stdout=subprocess.PIPE, universal_newlines=True).stdout.split('\n')
-    assert seen[0].split() == ['CapEff:', '0000000000000000']
-    assert seen[1] == '0' and 'Read-only file system' in seen[2] and seen[3] == 'wrote'
-    assert seen[4:] == ['lo', '']
-    assert (work / 'mine').exists() and leftovers()[1] == []
+    assert seen[0] == '65534' and seen[1].split() == ['CapEff:', '0000000000000000']
+    assert seen[2] == '0' and 'Read-only file system' in seen[3]
+    assert 'Permission denied' in seen[4] and seen[5] == 'wrote' and int(seen[6]) >= 1
+    assert seen[7:] == ['lo', '']
+    assert (work / 'mine').exists() and leftovers(before) == ([], [])
 
 
 def test_one_submission_exits_0_on_pass_and_1_on_fail(tmp_path):

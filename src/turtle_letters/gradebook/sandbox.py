@@ -71,6 +71,15 @@ def underlays(environ):
     return sorted(t for t in tops if os.path.isdir(t))
 
 
+def _covered_parents(path):
+    """The folders between a COVERED folder and `path`, outermost first."""
+    parents, parent = [], os.path.dirname(path)
+    while parent not in COVERED and parent != '/':
+        parents.insert(0, parent)
+        parent = os.path.dirname(parent)
+    return parents if parent in COVERED else []
+
+
 def _link_targets(folder):
     """Where the links in `folder`'s packages point (build.sh links this package's parts)."""
     targets = set()
@@ -308,6 +317,8 @@ class Sandbox:
             rules += ['--ro-bind', path, path]
         for path in self.hidden:
             rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]
+        for parent in _covered_parents(self.work):      # bubblewrap would make them 0700
+            rules += ['--perms', '0755', '--dir', parent]
         rules += ['--bind', self.work, self.work, '--chdir', self.work, '--clearenv']
         for name, value in sorted(env.items()):
             rules += ['--setenv', name, value]

@@ -2,13 +2,14 @@
 which poses count, and which steps no command could make."""
 import pytest
 
-from turtle_letters.gradebook.observations import TICK, drawing, moved, stood_for, trigger
+from turtle_letters.gradebook.observations import (TICK, chatter_peak, drawing, moved,
+                                                   own_triggers, stood_for, trigger)
 
 SIM = '/turtlesim'
 
 
-def graph(t=0.0):
-    return dict(kind='graph', t=t, simulator=[SIM])
+def graph(t=0.0, controller='/drawer'):
+    return dict(kind='graph', t=t, simulator=[SIM], cmd_vel_publishers=[controller])
 
 
 def pose(t, x, y, v=0.0, w=0.0, sender=SIM):
@@ -71,6 +72,29 @@ def test_the_trigger_is_the_cadets_p_unless_the_grader_sent_it():
     assert trigger(events, 0.0) == 3.0
     assert trigger(events, 0.0, by_grader=True) == 1.0
     assert trigger(events, 3.5) is None
+
+
+def test_a_p_from_the_node_that_drives_the_turtle_is_no_trigger():
+    events = [graph(controller='/v_drawer'),
+              dict(kind='chatter', t=1.0, data='P', sender='/v_drawer'),
+              dict(kind='chatter', t=4.0, data='P', sender='/talker')]
+    assert trigger(events, 0.0) == 4.0
+    assert own_triggers(events) == ['/v_drawer']
+    assert own_triggers(events[:1] + events[2:]) == []
+
+
+def test_chatter_is_counted_per_watch_and_its_peak_is_per_second():
+    counts = [dict(kind='chatter_count', t=t, count=n) for t, n in ((1.0, 1), (1.1, 900), (1.2, 3))]
+    assert chatter_peak(counts) == pytest.approx(9000)
+    assert chatter_peak([]) == 0
+
+
+def test_turtlesim_cleared_or_reset_while_the_turtle_drew():
+    said = [dict(kind='canvas', t=t, what=what, sender=sender) for t, what, sender in
+            ((0.2, 'clear', SIM), (1.5, 'clear', SIM), (1.6, 'reset', '/faker'), (9.0, 'reset', SIM))]
+    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0) + standing(2.01, 3, 6.0) + said
+    d = drawing(events, since=0.5, settle=2.0)
+    assert [(round(s, 1), what) for s, what in d.wiped] == [(0.5, 'clear')]
 
 
 def test_the_commands_counted_while_the_turtle_drew():

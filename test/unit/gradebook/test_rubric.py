@@ -86,6 +86,34 @@ def test_accuracy_falls_linearly_between_full_and_none():
     assert score['Its accuracy'][0] == pytest.approx(10, abs=1.5)
 
 
+def test_a_limit_of_the_sandbox_fails_the_submission_in_words():
+    graded = grade(facts()._replace(limit='memory limit of 2 GiB reached'), load(DEFAULT))
+    assert graded.verdict == 'fail' and graded.score == 100
+    assert graded.reason == "It keeps within the sandbox's limits: memory limit of 2 GiB reached"
+    assert not graded.tests[0].met and graded.tests[0].max_score == 0
+
+
+def test_cheats_on_the_trigger_and_the_canvas_cost_the_criterion_they_break():
+    rubric = load(DEFAULT)
+    own = scores_of(grade(facts()._replace(own_triggers=['/v_drawer']), rubric))
+    flood = scores_of(grade(facts()._replace(chatter_peak=9000.0), rubric))
+    cleared = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 200, [], [], 5.0,
+                                            [(2.5, 'clear')])), rubric))
+    reset = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 200, [], [], 5.0,
+                                          [(1.0, 'reset'), (3.0, 'reset')])), rubric))
+    talker, letter, driven = ('The talker publishes P on a key press',
+                              'The letter drawn is the expected one',
+                              'The turtle was driven over cmd_vel')
+    assert own[talker] == (0, '/v_drawer drives the turtle and published "P" on /chatter '
+                              'itself: it draws without the trigger')
+    assert flood[talker] == (0, 'fine, but /chatter was flooded: 9000 messages a second')
+    assert cleared[letter] == (0, 'turtlesim was cleared 2.5 s into the drawing: the letter on '
+                                  'its canvas is not whole')
+    assert reset[driven] == (0, 'turtlesim was reset 1.0 s into the drawing (2 times): the turtle '
+                                'was put back, not driven')
+    assert cleared[driven][0] == 10 and reset[letter][0] == 25
+
+
 def test_made_up_poses_and_teleports_fail_the_driving():
     made_up = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 0, ['/f_drawer'], [])),
                              load(DEFAULT)))

@@ -1,0 +1,58 @@
+"""What the class tests look at around a grading: the tree of files a
+submission could reach, and whatever a grading could leave behind. No ROS
+here."""
+import glob
+import hashlib
+import os
+import subprocess
+
+from support.children import readable_env
+
+SANDBOX_USER = 65534        # turtle_letters.gradebook.sandbox.USER
+CGROUPS = '/sys/fs/cgroup'
+
+
+def tree_hash(top):
+    """A hash of every file under `top`: its path, mode and bytes."""
+    digest = hashlib.sha256()
+    for folder, folders, files in sorted(os.walk(top)):
+        folders.sort()
+        for name in sorted(files):
+            path = os.path.join(folder, name)
+            digest.update(path.encode() + oct(os.lstat(path).st_mode).encode())
+            if os.path.isfile(path) and not os.path.islink(path):
+                with open(path, 'rb') as f:
+                    digest.update(f.read())
+    return digest.hexdigest()
+
+
+def grade_class(*args, timeout=900, **env):
+    return subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', *args],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, env=readable_env(**env), timeout=timeout)
+
+
+def sandbox_processes():
+    """pid: command line of each process run by the sandbox's user."""
+    found = {}
+    for pid in filter(str.isdigit, os.listdir('/proc')):
+        try:
+            if os.stat(f'/proc/{pid}').st_uid == SANDBOX_USER:
+                with open(f'/proc/{pid}/cmdline', 'rb') as f:
+                    found[int(pid)] = f.read().replace(b'\0', b' ').decode().strip()
+        except OSError:
+            continue
+    return found
+
+
+def leftovers(before=None):
+    """What a grading left: processes from its work folders or of the
+    sandbox's user (but those in `before`), network namespaces, cgroups."""
+    processes = subprocess.run(['pgrep', '-af', 'turtle_letters_grade_'], stdout=subprocess.PIPE,
+                               universal_newlines=True).stdout.splitlines()
+    processes += [f'{pid} {line}' for pid, line in sandbox_processes().items()
+                  if pid not in (before or {})]
+    namespaces = subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
+                                universal_newlines=True).stdout
+    cgroups = glob.glob(f'{CGROUPS}/**/tlgrade*', recursive=True)
+    return processes, [n for n in namespaces.split() if n.startswith('tlgrade')] + cgroups
