@@ -38,7 +38,7 @@ mkdir -p "$results/network"
 (cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
   --junitxml="$results/network/pytest.xml" test/network) || status=1
 
-echo "== class tests: a class of cadets' packages graded by grade_class.py (root only)"
+echo "== class tests: a class of cadets' packages, and hostile ones, graded by grade_class.py (root only)"
 mkdir -p "$results/class"
 (cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
   --junitxml="$results/class/pytest.xml" test/class) || status=1

@@ -96,8 +96,10 @@ def test_each_neighbour_gets_the_grade_lena_gets_alone(room, graded):
 def test_what_the_writer_tried_outside_its_sandbox_failed(room, graded):
     log = (room['out'] / 'h1_writer' / 'log.txt').read_text()
     for verb, path in room['targets']:
-        assert f'HOSTILE {verb} {path}: refused' in log, (verb, path)
-    assert 'mine.txt: done' in log      # its own home is its own
+        if path != room['tmp_file']:
+            assert f'HOSTILE {verb} {path}: refused' in log, (verb, path)
+    # its own home and /tmp are its own: what it wrote there went with the sandbox
+    assert 'mine.txt: done' in log and f'{room["tmp_file"]}: done' in log
     assert not os.path.exists(room['tmp_file'])
     assert not (room['home'] / 'pwned.txt').exists()
 

@@ -5,6 +5,7 @@ import glob
 import hashlib
 import os
 import subprocess
+import tempfile
 
 from support.children import readable_env
 
@@ -47,7 +48,8 @@ def sandbox_processes():
 
 def leftovers(before=None):
     """What a grading left: processes from its work folders or of the
-    sandbox's user (but those in `before`), network namespaces, cgroups."""
+    sandbox's user (but those in `before`); network namespaces, cgroups and
+    work or scratch folders."""
     processes = subprocess.run(['pgrep', '-af', 'turtle_letters_grade_'], stdout=subprocess.PIPE,
                                universal_newlines=True).stdout.splitlines()
     processes += [f'{pid} {line}' for pid, line in sandbox_processes().items()
@@ -55,4 +57,7 @@ def leftovers(before=None):
     namespaces = subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
                                 universal_newlines=True).stdout
     cgroups = glob.glob(f'{CGROUPS}/**/tlgrade*', recursive=True)
-    return processes, [n for n in namespaces.split() if n.startswith('tlgrade')] + cgroups
+    folders = glob.glob(os.path.join(tempfile.gettempdir(), 'turtle_letters_grade_*')) + \
+        glob.glob(os.path.join(tempfile.gettempdir(), 'turtle_letters_sandbox_*'))
+    return processes, [n for n in namespaces.split() if n.startswith('tlgrade')] + cgroups + \
+        folders

@@ -24,15 +24,17 @@ MASTER_PORT = 11311
 USER = 65534            # nobody: the submission's processes run as this user
 GiB = 1024 ** 3
 # What the sandbox sees. The system is read-only; only the work folder
-# (the submission's copy, its build and its home) and a private /tmp are
-# writable; the folders given as `hidden` (the class, the roster, the
-# results) are covered by empty ones.
+# (the submission's copy, its build and its home, bound after these rules)
+# and a private /tmp and /dev/shm ({scratch}: folders of the sandbox's own)
+# are writable; the folders given as `hidden` (the class, the roster, the
+# results) are covered by empty ones. (No --perms or --size: Ubuntu 20.04's
+# bubblewrap 0.4 lacks them.)
 RULES = [
     (['--ro-bind', '/', '/'], 'the system, read-only'),
     (['--dev', '/dev'], 'a private /dev'),
-    (['--perms', '1777', '--tmpfs', '/dev/shm'], 'a private /dev/shm, writable'),
+    (['--bind', '{scratch}/shm', '/dev/shm'], 'a private /dev/shm, writable'),
     (['--proc', '/proc'], 'its own processes only'),
-    (['--perms', '1777', '--tmpfs', '/tmp'], 'a private /tmp, writable'),
+    (['--bind', '{scratch}/tmp', '/tmp'], 'a private /tmp, writable'),
     (['--tmpfs', '/root'], "nothing of root's home"),
     (['--tmpfs', '/home'], "nothing of the users' homes"),
     (['--unshare-pid'], 'its own process tree, gone when the sandbox ends'),
@@ -274,11 +276,16 @@ class Sandbox:
         self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
         port = MASTER_PORT if isolated else _free_port()
         self.master_uri = f'http://127.0.0.1:{port}'
-        self.cgroup = None
+        self.cgroup = self.scratch = None
 
     def __enter__(self):
         if not self.isolated:
             return self
+        self.scratch = tempfile.mkdtemp(prefix='turtle_letters_sandbox_')
+        for name in ('tmp', 'shm'):
+            os.mkdir(os.path.join(self.scratch, name))
+            os.chown(os.path.join(self.scratch, name), USER, USER)
+            os.chmod(os.path.join(self.scratch, name), 0o1777)
         for command in (['ip', 'netns', 'add', self.namespace],
                         ['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up']):
             subprocess.run(command, check=True, stderr=subprocess.PIPE, universal_newlines=True)
@@ -297,6 +304,7 @@ class Sandbox:
             self.cgroup.remove()
         if self.isolated:
             subprocess.run(['ip', 'netns', 'delete', self.namespace], check=False)
+            shutil.rmtree(self.scratch, ignore_errors=True)
 
     def reached(self):
         """The words of the first limit the submission reached, or ''."""
@@ -312,13 +320,14 @@ class Sandbox:
         if not self.isolated:
             return self.pinned + ['env', '-i'] + [f'{k}={v}' for k, v in sorted(env.items())] + \
                 list(argv)
-        rules = [option for options, _ in RULES for option in options]
+        rules = [option.format(scratch=self.scratch) for options, _ in RULES
+                 for option in options]
         for path in underlays(os.environ):
             rules += ['--ro-bind', path, path]
         for path in self.hidden:
             rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]
         for parent in _covered_parents(self.work):      # bubblewrap would make them 0700
-            rules += ['--perms', '0755', '--dir', parent]
+            rules += ['--dir', parent]
         rules += ['--bind', self.work, self.work, '--chdir', self.work, '--clearenv']
         for name, value in sorted(env.items()):
             rules += ['--setenv', name, value]
