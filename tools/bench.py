@@ -11,11 +11,12 @@ bench-results/bench.png (ideal strokes and recorded paths, corners enlarged).
 A classroom group (tools/bench_classroom.py) draws the N with 1, 10 and 30
 turtles at once, and a parallel word against its slowest letter alone. A
 grading group (tools/bench_grading.py, root) grades a class of 30 with
-grade_class.py, and the lab's own submission alone against it in the class.
+grade_class.py, the lab's own submission alone against it in the class, and
+Lena's L with and without the sandbox (its cost).
 
 Usage: bench.py [--reps N] [--letter N] [--modes timed,timed-wall,feedback] [--loads idle,loaded]
                 [--classroom 1,10,30] [--parallel-word yes|no] [--grade-class 30]
-                [--fairness yes|no]
+                [--fairness yes|no] [--sandbox-cost yes|no]
 """
 import argparse
 import json
@@ -46,7 +47,7 @@ from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # 
                            wait_until)
 from turtle_letters.grading.procstat import cpu_seconds, rss_mb  # noqa: E402
 from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
-from bench_grading import alone_runs, class_run, grading_lines  # noqa: E402
+from bench_grading import alone_runs, class_run, grading_lines, sandbox_cost  # noqa: E402
 
 # Loaded, a command that misses turtlesim's 16 ms tick is replaced by the one
 # before, applied once more: smooth mode then runs on up to a tick's move
@@ -396,6 +397,8 @@ def main():
                         help='students in a class graded by grade_class.py ("" for none; root)')
     parser.add_argument('--fairness', default='yes', choices=('yes', 'no'),
                         help="the lab's submission graded alone 3 times, against the class")
+    parser.add_argument('--sandbox-cost', default='yes', choices=('yes', 'no'),
+                        help="Lena's L graded 3 times in the sandbox and 3 times without (root)")
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
@@ -411,6 +414,10 @@ def main():
     if args.fairness == 'yes':
         print("bench: the lab's submission graded alone, 3 times...", flush=True)
         graded['grade_alone'] = alone_runs()
+    if args.sandbox_cost == 'yes':
+        print("bench: what the sandbox costs, Lena's L graded 3 times in it and without...",
+              flush=True)
+        graded['sandbox_cost'] = sandbox_cost()
     processes = Processes(args.out)
     loads = []
     try:

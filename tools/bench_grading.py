@@ -7,6 +7,10 @@
 - Fairness: the lab's own busy-loop controller (c01_nadia) graded alone
   three times, against its copies graded in that class: the same verdict
   and letter, and a worst deviation within the spread of the runs alone.
+- The sandbox's cost: Lena's L (c03_lena) graded three times in the
+  sandbox and three times with --no-sandbox (inside a bubblewrap container
+  of the bench's own, as Gradescope's container would hold it), and the
+  sandbox made and removed alone.
 """
 import csv
 import json
@@ -23,6 +27,7 @@ MODELS = [('c01_nadia', 'Nadia Novak'), ('c02_kofi', 'Kofi Mensah'), ('c03_lena'
           ('c04_maria', 'Maria Silva')]
 LAB = 'c01_nadia'
 CLASS_TARGET_MIN, OVERHEAD_TARGET_S = 15.0, 15.0    # for 30 students on 2 cores
+SANDBOX_TARGET_S = 2.0      # the most the sandbox may add to a student's grading
 
 
 def _grade(*args):
@@ -99,6 +104,47 @@ def alone_runs(reps=3):
     return runs
 
 
+def _container(out):
+    """A bubblewrap container of the bench's own for a --no-sandbox run:
+    the system read-only, loopback only, `out` writable."""
+    from turtle_letters.gradebook.sandbox import underlays
+    box = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc', '--tmpfs', '/tmp']
+    for path in underlays(os.environ):
+        box += ['--ro-bind', path, path]
+    return box + ['--bind', out, out, '--unshare-net', '--unshare-pid', '--die-with-parent', '--']
+
+
+def sandbox_cost(reps=3):
+    """Seconds to grade Lena in the sandbox and without it, `reps` times
+    each, and to make and remove the sandbox alone."""
+    from turtle_letters.gradebook.sandbox import Sandbox
+    lena = os.path.join(CLASS, 'submissions', 'c03_lena')
+    times = {'sandboxed': [], 'unsandboxed': []}
+    for _ in range(reps):
+        for kind in times:
+            out = tempfile.mkdtemp(prefix='bench_sandbox_')
+            try:
+                args = ['--one', lena, '--letter', 'L', '--out', out]
+                if kind == 'sandboxed':
+                    _grade(*args)
+                else:
+                    subprocess.run(_container(out) + ['rosrun', 'turtle_letters',
+                                                      'grade_class.py', *args, '--no-sandbox'],
+                                   stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
+                times[kind].append(_results(out, 'c03_lena')[0]['execution_time'])
+            finally:
+                shutil.rmtree(out, ignore_errors=True)
+    made = []
+    for _ in range(reps):
+        work = tempfile.mkdtemp(prefix='bench_sandbox_work_')
+        started = time.monotonic()
+        with Sandbox(work) as box:
+            subprocess.run(box.inside(['true'], {}), check=True)
+        made.append(time.monotonic() - started)
+        shutil.rmtree(work, ignore_errors=True)
+    return dict(times, made_s=statistics.median(made))
+
+
 def grading_lines(results):
     lines = ['']
     c = results.get('grade_class')
@@ -121,7 +167,16 @@ def grading_lines(results):
             f"height (spread {spread:.2f}); in the class {', '.join(f'{f:.2f}' for f in inside)}% "
             f"(farthest from the median alone {far:.2f}{'!' if far > max(spread, 0.01) else ''}); "
             f"verdicts and letters {sorted(same)}{'!' if len(same) > 1 else ''}")
+    cost = results.get('sandbox_cost')
+    if cost:
+        inside, outside = (statistics.median(cost[k]) for k in ('sandboxed', 'unsandboxed'))
+        lines.append(
+            f"the sandbox: Lena's L graded in it {', '.join(f'{t:.1f}' for t in cost['sandboxed'])}"
+            f" s, without it {', '.join(f'{t:.1f}' for t in cost['unsandboxed'])} s: "
+            f"{inside - outside:+.2f}{'!' if inside - outside > SANDBOX_TARGET_S else ''} s "
+            f"(medians); made, used once and removed: {1000 * cost['made_s']:.0f} ms")
     lines.append(f'Grading targets: {CLASS_TARGET_MIN:g} min for 30 students on 2 cores; '
                  f'<= {OVERHEAD_TARGET_S:g} s per student beyond the drawing; the same verdict '
-                 f'and letter alone and in a class, the deviation within the spread alone.')
+                 f'and letter alone and in a class, the deviation within the spread alone; the sandbox '
+                 f'adds <= {SANDBOX_TARGET_S:g} s.')
     return lines

@@ -37,13 +37,14 @@ class Drawing(NamedTuple):
         return max((self.ended if self.ended is not None else self.last) - self.started, 0.0)
 
 
+def _ever_in_graph(events, role):
+    """Every node the graph reports ever held `role` (a key of a graph event)."""
+    return {name for e in events if e['kind'] == 'graph' for name in e[role]}
+
+
 def simulator(events):
     """The simulator's node names: the servers of /spawn, as the graph reports them."""
-    names = set()
-    for e in events:
-        if e['kind'] == 'graph':
-            names.update(e['simulator'])
-    return names
+    return _ever_in_graph(events, 'simulator')
 
 
 def last_graph(events):
@@ -99,11 +100,7 @@ def stood_for(events, since):
 
 def controllers(events):
     """The nodes that published on the turtle's cmd_vel, as the graph reported them."""
-    names = set()
-    for e in events:
-        if e['kind'] == 'graph':
-            names.update(e['cmd_vel_publishers'])
-    return names
+    return _ever_in_graph(events, 'cmd_vel_publishers')
 
 
 def trigger(events, since, by_grader=False):
