@@ -102,14 +102,15 @@ def test_nothing_is_left_behind(graded):
 def test_the_sandbox_is_as_its_rules_say(tmp_path):
     """What a command inside sees: an unprivileged user with no capability,
     the system read-only, root's files unreadable, the class hidden, only
-    its work folder and /tmp writable, loopback only, a cgroup of its own."""
+    its work folder and /tmp writable, a cgroup of its own, no service's
+    socket in /run, loopback only."""
     from turtle_letters.gradebook.sandbox import Sandbox
     work = tmp_path / 'work'
     work.mkdir()
     before = sandbox_processes()
     probe = ('id -u; grep CapEff /proc/self/status; ls "$0" | wc -l; touch /usr/x 2>&1; '
              'head -c1 /etc/shadow 2>&1; touch "$1/mine" /tmp/mine && echo wrote; '
-             'grep -c tlgrade /proc/self/cgroup; ls /sys/class/net')
+             'grep -c tlgrade /proc/self/cgroup; ls /run | wc -l; ls /sys/class/net')
     with Sandbox(str(work), hidden=[SUBMISSIONS]) as box:
         seen = subprocess.run(box.inside(['bash', '-c', probe, SUBMISSIONS, str(work)],
                                          {'PATH': '/usr/bin:/bin'}),
@@ -117,7 +118,7 @@ def test_the_sandbox_is_as_its_rules_say(tmp_path):
     assert seen[0] == '65534' and seen[1].split() == ['CapEff:', '0000000000000000']
     assert seen[2] == '0' and 'Read-only file system' in seen[3]
     assert 'Permission denied' in seen[4] and seen[5] == 'wrote' and int(seen[6]) >= 1
-    assert seen[7:] == ['lo', '']
+    assert seen[7] == '0' and seen[8:] == ['lo', '']
     assert (work / 'mine').exists() and leftovers(before) == ([], [])
 
 

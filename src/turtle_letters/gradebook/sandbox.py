@@ -37,6 +37,7 @@ RULES = [
     (['--bind', '{scratch}/tmp', '/tmp'], 'a private /tmp, writable'),
     (['--tmpfs', '/root'], "nothing of root's home"),
     (['--tmpfs', '/home'], "nothing of the users' homes"),
+    (['--tmpfs', '/run'], "none of the machine's service sockets (D-Bus, systemd)"),
     (['--unshare-pid'], 'its own process tree, gone when the sandbox ends'),
     (['--unshare-ipc', '--unshare-uts'], 'no shared memory or host name of the machine'),
     (['--die-with-parent'], 'ends when the grader ends'),
@@ -55,7 +56,7 @@ LIMITS = {
     'cpu': (300, lambda n: f'CPU time limit of {n} s reached'),
 }
 _NUMBERS = itertools.count(1)
-COVERED = ('/tmp', '/root', '/home')     # the folders RULES covers with empty ones
+COVERED = ('/tmp', '/root', '/home', '/run')     # the folders RULES covers with empty ones
 ENVIRONMENT = ('CMAKE_PREFIX_PATH', 'ROS_PACKAGE_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH')
 
 
