@@ -10,7 +10,7 @@ source "$(dirname "$0")/env.sh"
 mkdir -p "$WS/src"
 [ -L "$WS/src/turtle_letters" ] && rm "$WS/src/turtle_letters"
 mkdir -p "$WS/src/turtle_letters"
-for part in package.xml CMakeLists.txt setup.py README.md config doc launch scripts src srv action test; do
+for part in package.xml CMakeLists.txt setup.py README.md config doc launch web scripts src srv action test; do
   ln -sfn "$REPO/$part" "$WS/src/turtle_letters/$part"
 done
 

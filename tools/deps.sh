@@ -6,19 +6,21 @@ source "$(dirname "$0")/env.sh"
 # On every platform: the compiler catkin's top-level CMake project needs, and
 # what the tests and the headless run use.
 COMMON="bubblewrap g++ git hershey-fonts-data iproute2 python3-pytest python3-pyqt5 python3-tqdm python3-yaml
-        tmux"
+        python3-tornado tmux"
 if [ -d /opt/ros/noetic ]; then
-  # Ubuntu 20.04 with ROS Noetic: the real turtlesim.
+  # Ubuntu 20.04 with ROS Noetic: the real turtlesim. (Its chromium is a snap:
+  # the viewer's browser test says it has no chromium-driver there, and skips.)
   WANT="$COMMON ros-noetic-ros-base ros-noetic-turtlesim ros-noetic-rostest ros-noetic-std-srvs
         ros-noetic-geometry-msgs ros-noetic-message-generation ros-noetic-message-runtime
-        ros-noetic-actionlib ros-noetic-actionlib-msgs"
+        ros-noetic-actionlib ros-noetic-actionlib-msgs ros-noetic-sensor-msgs ros-noetic-image-view"
 else
   # Debian (12) or Ubuntu without /opt/ros: Debian's ROS 1 packages; the
   # simulator comes bundled, since Debian has no turtlesim.
   WANT="$COMMON ros-core-dev python3-rospy python3-rostest python3-roslaunch python3-rostopic
         python3-rosservice rosout python3-std-msgs python3-std-srvs python3-geometry-msgs
         ros-std-srvs libstd-srvs-dev rosbash rospack-tools python3-svgelements
-        python3-actionlib ros-actionlib-msgs libactionlib-msgs-dev python3-actionlib-msgs"
+        python3-actionlib ros-actionlib-msgs libactionlib-msgs-dev python3-actionlib-msgs
+        python3-sensor-msgs ros-image-view chromium chromium-driver python3-selenium"
 fi
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then

@@ -21,6 +21,7 @@ LAYERS = [
     {'classroom'},                      # many students on one turtlesim
     {'turtle', 'actions', 'grading'},   # the lab's turtle; requests; scoring
     {'controller', 'talker'},           # the lab's nodes
+    {'viewer'},                         # the room seen from any seat: a live page, an image
     {'gradebook'},                      # the instructor's: a class graded as handed in
 ]
 PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors', 'motion.control',
@@ -28,7 +29,8 @@ PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors'
         'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
         'grading.recognition', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',
         'gradebook.reports', 'gradebook.submission', 'gradebook.failures', 'grading.files',
-        'grading.procstat', 'actions.jobs', 'actions.progress'}
+        'grading.procstat', 'actions.jobs', 'actions.progress', 'viewer.trails', 'viewer.picture',
+        'viewer.server'}
 ROS = ('rospy', 'rosgraph', 'actionlib', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')
 
 

@@ -1,0 +1,178 @@
+"""The viewer's web server, with Debian's tornado: the page and its script
+and style (this package's web/ folder), the canvas as /canvas.png, and
+/room, a WebSocket that gives each page the room's state. No ROS here.
+
+Read-only: no request changes anything; what a page sends is ignored.
+Unknown paths get 404 and other methods 405, with no traceback ever. Each
+page gets a snapshot when it connects (the canvas as a PNG, every turtle),
+then every SEND_PERIOD only what changed since what it was sent, never a
+backlog: a page whose last update is still unread is skipped (and dropped
+after STALLED s), and one too far behind gets a snapshot again."""
+import base64
+import json
+import os
+import time
+
+import tornado.ioloop
+import tornado.web
+import tornado.websocket
+
+SEND_PERIOD = 0.04      # s between updates to a page: a pose is on it within about this
+STALLED = 10.0          # s a page may leave an update unread before it is dropped
+CATCH_UP = 5000         # strokes behind past which a page gets a snapshot instead
+FILES = {'/': ('index.html', 'text/html; charset=utf-8'),
+         '/viewer.js': ('viewer.js', 'text/javascript; charset=utf-8'),
+         '/viewer.css': ('viewer.css', 'text/css; charset=utf-8')}
+SAFE_HEADERS = {'X-Content-Type-Options': 'nosniff', 'Cache-Control': 'no-store',
+                'Content-Security-Policy': "default-src 'self'; img-src 'self' data:; "
+                                           "connect-src 'self'; frame-ancestors 'none'"}
+
+
+def _colour(rgb):
+    return '#%02x%02x%02x' % tuple(rgb)
+
+
+def strokes_message(strokes, to_pixels):
+    """Strokes as {colour: [x0, y0, x1, y1, ...]} in canvas pixels, 0.1 px apart."""
+    by_colour = {}
+    for s in strokes:
+        (x0, y0), (x1, y1) = to_pixels(s.x0, s.y0), to_pixels(s.x1, s.y1)
+        by_colour.setdefault(_colour(s.colour), []).extend(
+            round(v, 1) for v in (x0, y0, x1, y1))
+    return by_colour
+
+
+def turtles_message(turtles, to_pixels):
+    """{name: [x, y (pixels), theta (rad)]}."""
+    return {name.strip('/'): [*(round(v, 1) for v in to_pixels(t.x, t.y)), round(t.theta, 2)]
+            for name, t in turtles.items()}
+
+
+class Base(tornado.web.RequestHandler):
+    def set_default_headers(self):
+        for name, value in SAFE_HEADERS.items():
+            self.set_header(name, value)
+
+    def write_error(self, status_code, **_):
+        """The status and its reason, never a traceback."""
+        self.set_header('Content-Type', 'text/plain; charset=utf-8')
+        self.finish(f'{status_code}: {self._reason}\n')
+
+
+class NotFound(Base):
+    def prepare(self):
+        raise tornado.web.HTTPError(404)
+
+
+class PageFile(Base):
+    def initialize(self, folder):
+        self.folder = folder
+
+    def get(self):
+        name, kind = FILES[self.request.path]
+        with open(os.path.join(self.folder, name), 'rb') as f:
+            self.set_header('Content-Type', kind)
+            self.finish(f.read())
+
+
+class CanvasPng(Base):
+    def initialize(self, view):
+        self.view = view
+
+    def get(self):
+        self.set_header('Content-Type', 'image/png')
+        self.finish(self.view.painting.snapshot()[2])
+
+
+class Page(tornado.websocket.WebSocketHandler):
+    """One open page: what it was sent, so that it is sent only what changed."""
+
+    def initialize(self, view, pages):
+        self.view, self.pages = view, pages
+        self.clears = self.count = 0
+        self.sent_turtles, self.sent_room = {}, {}
+        self.pending, self.since = None, 0.0
+
+    def set_default_headers(self):
+        for name, value in SAFE_HEADERS.items():
+            self.set_header(name, value)
+
+    def open(self):
+        if len(self.pages.open) >= self.pages.most:
+            self.close(1013, f'the viewer shows {self.pages.most} pages already: try again later')
+            return
+        self.pages.open.add(self)
+        self.send(self.snapshot())
+
+    def on_message(self, message):
+        """Read-only: whatever a page sends changes nothing."""
+
+    def on_close(self):
+        self.pages.open.discard(self)
+
+    def snapshot(self):
+        clears, count, png = self.view.painting.snapshot()
+        _, _, turtles = self.view.trails.since(clears, count)
+        self.clears, self.count = clears, count
+        self.sent_turtles = turtles_message(turtles, self.view.to_pixels)
+        self.sent_room = self.view.room()
+        return dict(kind='snapshot', background=_colour(self.view.trails.background),
+                    canvas='data:image/png;base64,' + base64.b64encode(png).decode(),
+                    turtles=self.sent_turtles, room=self.sent_room)
+
+    def update(self):
+        """What changed since this page was last sent anything, or None."""
+        clears, strokes, turtles = self.view.trails.since(self.clears, self.count)
+        if clears != self.clears or len(strokes) > CATCH_UP:
+            return self.snapshot()
+        self.count += len(strokes)
+        now = turtles_message(turtles, self.view.to_pixels)
+        moved = {n: t for n, t in now.items() if self.sent_turtles.get(n) != t}
+        gone = sorted(set(self.sent_turtles) - set(now))
+        room = self.view.room()
+        changed = {k: v for k, v in room.items() if self.sent_room.get(k) != v}
+        self.sent_turtles, self.sent_room = now, room
+        if not (strokes or moved or gone or changed):
+            return None
+        return dict(kind='update', strokes=strokes_message(strokes, self.view.to_pixels),
+                    turtles=moved, gone=gone, room=changed)
+
+    def send(self, message):
+        try:
+            self.pending, self.since = self.write_message(json.dumps(message)), time.monotonic()
+        except tornado.websocket.WebSocketClosedError:
+            self.pages.open.discard(self)
+
+    def tick(self):
+        """Sends what changed, unless the last update is still unread."""
+        if self.pending is not None and not self.pending.done():
+            if time.monotonic() - self.since > STALLED:
+                self.close(1008, 'this page stopped reading the room')
+                self.pages.open.discard(self)
+            return
+        message = self.update()
+        if message is not None:
+            self.send(message)
+
+
+class Pages:
+    """The open pages, at most `most`, each sent what changed every SEND_PERIOD."""
+
+    def __init__(self, most):
+        self.most, self.open = most, set()
+
+    def tick(self):
+        for page in list(self.open):
+            page.tick()
+
+
+def application(view, web_folder, most_pages):
+    """The server's routes; `view` has .trails, .painting, .to_pixels and .room()."""
+    pages = Pages(most_pages)
+    routes = [(path, PageFile, dict(folder=web_folder)) for path in FILES]
+    routes += [('/canvas.png', CanvasPng, dict(view=view)),
+               ('/room', Page, dict(view=view, pages=pages))]
+    app = tornado.web.Application(routes, default_handler_class=NotFound,
+                                  websocket_max_message_size=1024, serve_traceback=False)
+    tornado.ioloop.PeriodicCallback(pages.tick, SEND_PERIOD * 1000).start()
+    return app, pages

@@ -1,0 +1,102 @@
+"""The shared canvas as the viewer rebuilds it, from what every simulator
+publishes, the real turtlesim included: each turtle's pose, and its
+color_sensor, the colour under it. That colour is the pen's while the pen
+is down and the background's while it is up, so a step ending on another
+colour than the background is a stroke in that colour. No ROS here.
+
+turtlesim reads the colour before it draws the tick's own line, so what it
+reads is the line before, which a 3-px pen covers while a tick's step is
+under 1.5 px (up to about 2 m/s): a pen lifted or put down shows a tick
+late, and about one reading in twenty on a straight line falls on a pixel
+the line missed, a tick-long gap that the strokes' square caps close. A
+stroke runs from where the last colour was read to the newest pose. The
+width is not published: strokes are PEN_WIDTH wide, turtlesim's default. A
+pen-up step that ends on another line reads its colour and retraces a tick
+of it.
+"""
+import threading
+from typing import Dict, List, NamedTuple, Optional, Tuple
+
+CANVAS_PIXELS = 500             # the canvas is this many pixels square
+PIXELS_PER_METRE = 45.0
+PEN_WIDTH = 3                   # px: turtlesim's default pen
+DEFAULT_BACKGROUND = (69, 86, 255)
+
+
+def to_pixels(x, y):
+    """World metres to canvas pixels (y grows downwards), as turtlesim maps them."""
+    return x * PIXELS_PER_METRE, (CANVAS_PIXELS - 1) - y * PIXELS_PER_METRE
+
+
+class Stroke(NamedTuple):
+    turtle: str
+    colour: Tuple[int, int, int]
+    x0: float
+    y0: float
+    x1: float
+    y1: float
+
+
+class Turtle(NamedTuple):
+    x: float
+    y: float
+    theta: float
+    drawn_to: Tuple[float, float]       # where its last stroke (or pen-up step) ended
+    colour: Optional[Tuple[int, int, int]] = None   # the last colour read under it
+
+
+class Trails:
+    """Every turtle and every stroke so far; thread-safe, as ROS callbacks
+    write while the server reads. `strokes` only grows until a clear; each
+    clear counts in `clears`, so a reader can tell its place is gone."""
+
+    def __init__(self, background=DEFAULT_BACKGROUND):
+        self.background = tuple(background)
+        self.turtles: Dict[str, Turtle] = {}
+        self.strokes: List[Stroke] = []
+        self.clears = 0
+        self.lock = threading.Lock()
+
+    def pose(self, name, x, y, theta):
+        with self.lock:
+            turtle = self.turtles.get(name)
+            drawn_to = turtle.drawn_to if turtle else (x, y)
+            colour = turtle.colour if turtle else None
+            self.turtles[name] = Turtle(x, y, theta, drawn_to, colour)
+
+    def colour(self, name, rgb):
+        """The colour under turtle `name` now: a stroke to its newest pose,
+        unless that colour is the background (its pen is up)."""
+        rgb = tuple(int(c) for c in rgb)
+        with self.lock:
+            turtle = self.turtles.get(name)
+            if turtle is None:
+                return
+            here = (turtle.x, turtle.y)
+            if rgb != self.background and here != turtle.drawn_to:
+                self.strokes.append(Stroke(name, rgb, *turtle.drawn_to, *here))
+            self.turtles[name] = turtle._replace(drawn_to=here, colour=rgb)
+
+    def gone(self, name):
+        """Turtle `name` was killed: its strokes stay, as on turtlesim's canvas."""
+        with self.lock:
+            self.turtles.pop(name, None)
+
+    def clear(self):
+        with self.lock:
+            self.strokes = []
+            self.clears += 1
+
+    def reset(self):
+        """turtlesim reset: the canvas cleared and every turtle gone (turtle1 comes back by its pose)."""
+        with self.lock:
+            self.strokes, self.turtles = [], {}
+            self.clears += 1
+
+    def since(self, clears, count):
+        """(clears, strokes after the first `count`, turtles) for a reader
+        that has seen `count` strokes since clear number `clears`; all the
+        strokes when a clear came since."""
+        with self.lock:
+            start = count if clears == self.clears else 0
+            return self.clears, self.strokes[start:], dict(self.turtles)

@@ -1,0 +1,187 @@
+#!/usr/bin/python3
+"""The viewer in a real browser (headless Chromium through Selenium): the
+page's canvas against the simulator's own saved canvas, each turtle's name
+and the drawings table, canvas/image, the page reconnecting by itself after
+the viewer restarts, and no error in the browser's console."""
+import base64
+import os
+import shutil
+import signal
+import socket
+import tempfile
+import unittest
+import urllib.request
+
+import actionlib
+import rospy
+import rostest
+from PyQt5.QtGui import QColor, QImage
+from sensor_msgs.msg import Image
+from std_srvs.srv import Trigger
+from turtlesim.msg import Pose
+
+from support.nodes import NodeProcess, wait_until
+from turtle_letters.msg import DrawAction, DrawGoal
+
+BACKGROUND = (69, 86, 255)
+CHROMEDRIVER = '/usr/bin/chromedriver'
+NEAR = 2            # px: a stroke's edge may fall a pixel or two either way
+AGREE = 0.97        # share of ink pixels that must have ink near them in the other picture
+ICON = 20           # px around the turtle: its icon covers the saved canvas there
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+def browser(folder):
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    for argument in ('--headless=new', '--no-sandbox', '--disable-gpu',
+                     f'--user-data-dir={folder}', '--window-size=1000,800'):
+        options.add_argument(argument)
+    options.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
+    return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+
+
+def ink(image, skip=None):
+    """The pixels of a 500-pixel canvas that are not the background, but those near `skip`."""
+    found = set()
+    for y in range(image.height()):
+        for x in range(image.width()):
+            if skip and (x - skip[0]) ** 2 + (y - skip[1]) ** 2 < ICON ** 2:
+                continue
+            c = QColor(image.pixel(x, y))
+            if (c.red(), c.green(), c.blue()) != BACKGROUND:
+                found.add((x, y))
+    return found
+
+
+def near_share(pixels, others):
+    """The share of `pixels` with one of `others` within NEAR px."""
+    near = sum(1 for x, y in pixels if any((x + dx, y + dy) in others
+                                           for dx in range(-NEAR, NEAR + 1)
+                                           for dy in range(-NEAR, NEAR + 1)))
+    return near / max(len(pixels), 1)
+
+
+@unittest.skipUnless(os.path.exists(CHROMEDRIVER), 'no chromium-driver here (make deps installs it)')
+class ViewerInABrowser(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('viewer_test')
+        cls.port = free_port()
+        cls.url = f'http://127.0.0.1:{cls.port}/'
+        cls.viewer = cls.start_viewer()
+        cls.profile = tempfile.mkdtemp(prefix='turtle_letters_chromium_')
+        cls.driver = browser(cls.profile)
+        cls.driver.get(cls.url)
+        cls.wait_for_page(lambda: cls.status() == 'live' and cls.names() == ['turtle1'],
+                          'the page live, with turtle1')
+        client = actionlib.SimpleActionClient('/draw', DrawAction)
+        assert client.wait_for_server(rospy.Duration(30)), 'no draw action'
+        client.send_goal(DrawGoal(text='L'))
+        assert client.wait_for_result(rospy.Duration(120)), 'the L was not drawn in 120 s'
+        cls.result = client.get_result()
+        cls.pose = rospy.wait_for_message('/turtle1/pose', Pose, timeout=10)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.driver.quit()
+        cls.viewer.stop()
+        shutil.rmtree(cls.profile, ignore_errors=True)
+
+    @classmethod
+    def start_viewer(cls):
+        viewer = NodeProcess('turtle_letters', 'view.py', f'_port:={cls.port}')
+        wait_until(lambda: cls.serving(), 30, 'the viewer serving its page', viewer.output)
+        return viewer
+
+    @classmethod
+    def serving(cls):
+        try:
+            return urllib.request.urlopen(cls.url, timeout=1).status == 200
+        except OSError:
+            return False
+
+    @classmethod
+    def status(cls):
+        return cls.driver.find_element('id', 'status').text
+
+    @classmethod
+    def names(cls):
+        return [item.text for item in cls.driver.find_elements('css selector', '#turtle-names li')]
+
+    @classmethod
+    def wait_for_page(cls, condition, what, timeout=30):
+        wait_until(condition, timeout, what, lambda: f'status {cls.status()!r}, names {cls.names()}')
+
+    def page_canvas(self):
+        url = self.driver.execute_script(
+            "return document.getElementById('canvas').toDataURL('image/png')")
+        image = QImage()
+        image.loadFromData(base64.b64decode(url.split(',', 1)[1]), 'PNG')
+        return image
+
+    def errors(self):
+        return [entry['message'] for entry in self.driver.get_log('browser')
+                if entry['level'] == 'SEVERE']
+
+    def test_1_no_error_in_the_console(self):
+        self.assertEqual(self.errors(), [])
+
+    def test_2_the_page_shows_what_turtlesim_drew(self):
+        saved = rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)()
+        self.assertTrue(saved.success, saved.message)
+        turtle = (self.pose.x * 45, 499 - self.pose.y * 45)
+        wait_until(lambda: len(ink(self.page_canvas(), turtle)) > 100, 10, 'ink on the page')
+        page, simulator = ink(self.page_canvas(), turtle), ink(QImage(saved.message), turtle)
+        self.assertGreater(len(simulator), 100)
+        self.assertGreater(near_share(simulator, page), AGREE, 'turtlesim ink missing on the page')
+        self.assertGreater(near_share(page, simulator), AGREE, 'page ink turtlesim has not')
+
+    def test_3_each_turtle_by_name_and_each_drawing_in_the_table(self):
+        self.assertEqual(self.names(), ['turtle1'])
+        rows = [[cell.text for cell in row.find_elements('css selector', 'td')]
+                for row in self.driver.find_elements('css selector', '#drawings tbody tr')]
+        self.assertTrue(self.result.drawn, self.result.message)
+        self.assertEqual(len(rows), 1)
+        self.assertEqual(rows[0][:2], ['/', 'L'])
+        self.assertEqual(rows[0][4], self.result.message)
+        done = self.driver.execute_script(
+            "return document.querySelector('#drawings progress').value")
+        self.assertEqual(done, 1)
+
+    def test_4_the_canvas_as_an_image_topic_and_a_png(self):
+        message = rospy.wait_for_message('/canvas/image', Image, timeout=10)
+        self.assertEqual((message.width, message.height, message.encoding, message.step),
+                         (500, 500, 'rgb8', 1500))
+        image = QImage(message.data, 500, 500, 1500, QImage.Format_RGB888)
+        png = QImage()
+        png.loadFromData(urllib.request.urlopen(self.url + 'canvas.png', timeout=5).read(), 'PNG')
+        self.assertEqual(ink(image), ink(png))
+        self.assertGreater(near_share(ink(image), ink(self.page_canvas())), AGREE)
+
+    def test_5_the_page_reconnects_by_itself_after_the_viewer_restarts(self):
+        self.driver.execute_script('window.sameLoad = true')
+        type(self).viewer.stop(signal.SIGINT)
+        self.wait_for_page(lambda: self.status().startswith('reconnecting'), 'reconnecting')
+        type(self).viewer = self.start_viewer()
+        self.wait_for_page(lambda: self.status() == 'live', 'live again')
+        self.assertTrue(self.driver.execute_script('return window.sameLoad === true'),
+                        'the page was reloaded')
+        turned = rospy.ServiceProxy('/turtle1/teleport_absolute',
+                                    __import__('turtlesim.srv', fromlist=['TeleportAbsolute'])
+                                    .TeleportAbsolute)
+        turned(2.0, 3.0, 0.0)
+        self.wait_for_page(lambda: self.driver.execute_script('return turtles.turtle1')[:2]
+                           == [90.0, 364.0], 'turtle1 where it was put, on the page')
+        unexpected = [e for e in self.errors() if 'WebSocket connection' not in e]
+        self.assertEqual(unexpected, [])
+
+
+if __name__ == '__main__':
+    rostest.rosrun('turtle_letters', 'viewer', ViewerInABrowser)

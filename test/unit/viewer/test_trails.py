@@ -1,0 +1,72 @@
+"""The canvas rebuilt from poses and the colour under each turtle: strokes
+where the colour is a pen's, none where it is the background's."""
+import pytest
+
+from turtle_letters.viewer.trails import DEFAULT_BACKGROUND, Stroke, Trails, to_pixels
+
+PEN = (179, 184, 255)
+RED = (255, 0, 0)
+
+
+def drive(trails, name, points, colour):
+    """A tick per point: the pose, then the colour under it, as turtlesim publishes them."""
+    for x, y in points:
+        trails.pose(name, x, y, 0.0)
+        trails.colour(name, colour)
+
+
+def test_a_pen_down_leaves_a_stroke_per_tick_in_its_colour():
+    trails = Trails()
+    drive(trails, 'turtle1', [(1.0, 1.0), (1.5, 1.0), (2.0, 1.0)], PEN)
+    assert trails.strokes == [Stroke('turtle1', PEN, 1.0, 1.0, 1.5, 1.0),
+                              Stroke('turtle1', PEN, 1.5, 1.0, 2.0, 1.0)]
+
+
+def test_a_pen_up_step_reads_the_background_and_leaves_nothing():
+    trails = Trails()
+    drive(trails, 'turtle1', [(1.0, 1.0), (2.0, 1.0)], DEFAULT_BACKGROUND)
+    drive(trails, 'turtle1', [(3.0, 1.0)], RED)
+    assert trails.strokes == [Stroke('turtle1', RED, 2.0, 1.0, 3.0, 1.0)]
+
+
+def test_a_colour_that_comes_before_its_pose_draws_at_the_next_one():
+    trails = Trails()
+    drive(trails, 't', [(1.0, 1.0)], PEN)
+    trails.colour('t', PEN)             # before the pose of its tick
+    trails.pose('t', 2.0, 1.0, 0.0)
+    trails.pose('t', 3.0, 1.0, 0.0)
+    trails.colour('t', PEN)
+    assert trails.strokes == [Stroke('t', PEN, 1.0, 1.0, 3.0, 1.0)]
+
+
+def test_a_custom_background_is_the_pen_up_colour():
+    trails = Trails(background=(10, 20, 30))
+    drive(trails, 't', [(1.0, 1.0), (2.0, 2.0)], (10, 20, 30))
+    drive(trails, 't', [(3.0, 3.0)], DEFAULT_BACKGROUND)
+    assert len(trails.strokes) == 1 and trails.strokes[0].colour == DEFAULT_BACKGROUND
+
+
+def test_a_reader_gets_what_came_since_it_looked_and_everything_after_a_clear():
+    trails = Trails()
+    drive(trails, 'a', [(1.0, 1.0), (2.0, 1.0), (3.0, 1.0)], PEN)
+    clears, strokes, turtles = trails.since(0, 1)
+    assert (clears, len(strokes), set(turtles)) == (0, 1, {'a'})
+    trails.clear()
+    drive(trails, 'a', [(4.0, 1.0)], RED)
+    clears, strokes, _ = trails.since(0, 2)
+    assert clears == 1 and strokes == [Stroke('a', RED, 3.0, 1.0, 4.0, 1.0)]
+
+
+def test_a_killed_turtle_goes_and_its_strokes_stay_until_a_reset():
+    trails = Trails()
+    drive(trails, 'turtle2', [(1.0, 1.0), (2.0, 1.0)], PEN)
+    trails.gone('turtle2')
+    assert trails.turtles == {} and len(trails.strokes) == 1
+    trails.reset()
+    assert trails.strokes == [] and trails.clears == 1
+
+
+def test_metres_map_to_turtlesims_pixels():
+    assert to_pixels(0.0, 0.0) == (0.0, 499.0)
+    assert to_pixels(11.088889, 11.088889) == pytest.approx((499.0, 0.0), abs=1e-3)
+
