@@ -1,0 +1,154 @@
+"""The viewer's web server, for real on a loopback port (no ROS: the room it
+shows is a Trails fed here): what it serves and refuses, the snapshot and
+the changes a page gets, the most pages it takes, and a page that stops
+reading, dropped while the others go on."""
+import asyncio
+import json
+import socket
+import threading
+import time
+import types
+import urllib.error
+import urllib.request
+
+import pytest
+import tornado.ioloop
+import tornado.websocket
+
+from turtle_letters.viewer import server
+from turtle_letters.viewer.picture import Painting
+from turtle_letters.viewer.trails import Trails, to_pixels
+
+PEN = (179, 184, 255)
+WEB = __file__.rsplit('/test/', 1)[0] + '/web'
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture
+def room():
+    """A server on a free port, in a thread of its own, showing a Trails."""
+    trails = Trails()
+    view = types.SimpleNamespace(trails=trails, painting=Painting(trails), to_pixels=to_pixels,
+                                 room=lambda: dict(drawings={}, scoreboard=''))
+    port, started = free_port(), threading.Event()
+    loops = []
+
+    def serve():
+        asyncio.set_event_loop(asyncio.new_event_loop())
+        app, pages = server.application(view, WEB, most_pages=2)
+        app.listen(port, '127.0.0.1')
+        loops.append((tornado.ioloop.IOLoop.current(), pages))
+        started.set()
+        tornado.ioloop.IOLoop.current().start()
+    thread = threading.Thread(target=serve, daemon=True)
+    thread.start()
+    started.wait(5)
+    yield types.SimpleNamespace(trails=trails, port=port, pages=loops[0][1],
+                                url=f'http://127.0.0.1:{port}')
+    loops[0][0].add_callback(loops[0][0].stop)
+    thread.join(5)
+
+
+def fetch(url, method='GET'):
+    try:
+        with urllib.request.urlopen(urllib.request.Request(url, method=method), timeout=5) as r:
+            return r.status, r.headers, r.read()
+    except urllib.error.HTTPError as e:
+        return e.code, e.headers, e.read()
+
+
+def raw_get(port, path):
+    """The status line of a GET of `path` exactly as written (no client tidies it)."""
+    with socket.create_connection(('127.0.0.1', port), timeout=5) as s:
+        s.sendall(f'GET {path} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n'.encode())
+        return s.makefile('rb').readline().decode()
+
+
+def test_the_page_its_files_and_the_canvas_are_served_read_only(room):
+    status, headers, body = fetch(room.url + '/')
+    assert status == 200 and b'<canvas id="canvas"' in body
+    assert "default-src 'self'" in headers['Content-Security-Policy']
+    assert fetch(room.url + '/viewer.js')[0] == 200 and fetch(room.url + '/viewer.css')[0] == 200
+    status, headers, body = fetch(room.url + '/canvas.png')
+    assert status == 200 and headers['Content-Type'] == 'image/png' and body[:4] == b'\x89PNG'
+
+
+@pytest.mark.parametrize('path', ['/nothing', '/index.html', '/../../etc/passwd',
+                                  '/%2e%2e/%2e%2e/etc/passwd', '/..%2f..%2fetc%2fpasswd',
+                                  '//etc/passwd', '/viewer.js/..', '/web/viewer.js'])
+def test_any_other_path_is_not_found(room, path):
+    assert ' 404 ' in raw_get(room.port, path)
+
+
+@pytest.mark.parametrize('method', ['POST', 'PUT', 'DELETE', 'PATCH'])
+def test_other_methods_are_refused_without_a_traceback(room, method):
+    status, _, body = fetch(room.url + '/', method)
+    assert status == 405 and b'Traceback' not in body and b'File "' not in body
+
+
+async def _page(url, messages=1):
+    connection = await tornado.websocket.websocket_connect(url.replace('http', 'ws') + '/room')
+    got = [json.loads(await connection.read_message()) for _ in range(messages)]
+    return connection, got
+
+
+def test_a_page_gets_a_snapshot_then_only_what_changed(room):
+    room.trails.pose('/turtle1', 1.0, 1.0, 0.0)
+    room.trails.colour('/turtle1', PEN)
+
+    async def look():
+        connection, (snapshot,) = await _page(room.url)
+        room.trails.pose('/turtle1', 2.0, 1.0, 0.5)
+        room.trails.colour('/turtle1', PEN)
+        update = json.loads(await connection.read_message())
+        connection.write_message('{"publish": "/turtle1/cmd_vel"}')     # read-only: ignored
+        await asyncio.sleep(0.2)
+        connection.close()
+        return snapshot, update
+    snapshot, update = asyncio.run(look())
+    assert snapshot['kind'] == 'snapshot' and snapshot['canvas'].startswith('data:image/png')
+    assert snapshot['turtles'] == {'turtle1': [45.0, 454.0, 0.0]}
+    assert update['kind'] == 'update' and update['turtles'] == {'turtle1': [90.0, 454.0, 0.5]}
+    assert update['strokes'] == {'#b3b8ff': [45.0, 454.0, 90.0, 454.0]}
+    assert len(room.trails.strokes) == 1
+
+
+def test_past_the_most_pages_a_polite_refusal(room):
+    async def crowd():
+        first, _ = await _page(room.url)
+        second, _ = await _page(room.url)
+        third = await tornado.websocket.websocket_connect(room.url.replace('http', 'ws') + '/room')
+        said = await third.read_message()
+        return said, third.close_code, third.close_reason
+    said, code, reason = asyncio.run(crowd())
+    assert said is None and code == 1013 and 'shows 2 pages already' in reason
+
+
+def test_a_page_that_stops_reading_is_dropped_and_the_others_go_on(room, monkeypatch):
+    monkeypatch.setattr(server, 'STALLED', 1.0)
+    key = 'dGhlIHNhbXBsZSBub25jZQ=='
+    stalled = socket.create_connection(('127.0.0.1', room.port))
+    stalled.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+    stalled.sendall((f'GET /room HTTP/1.1\r\nHost: 127.0.0.1:{room.port}\r\nUpgrade: websocket\r\n'
+                     f'Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\n'
+                     f'Sec-WebSocket-Version: 13\r\n\r\n').encode())
+
+    async def read_on():
+        connection, _ = await _page(room.url)
+        heard, deadline = 0, time.monotonic() + 8
+        while time.monotonic() < deadline:
+            for i in range(1000):   # strokes enough to fill the stalled page's socket buffers
+                room.trails.pose('/turtle1', 1 + (heard * 1000 + i) % 900 / 100, 1.0, 0.0)
+                room.trails.colour('/turtle1', PEN)
+            message = await asyncio.wait_for(connection.read_message(), 2)
+            heard += message is not None
+        return heard
+    heard = asyncio.run(read_on())
+    assert heard > 20               # up to 25 updates a second, for 8 s
+    assert len(room.pages.open) == 1    # the stalled one is gone
+    stalled.close()
