@@ -59,6 +59,7 @@ TRIGGERS = {
            '~text ignored: a drawing is waiting or under way')],
     'make run ARGS="svg:=doc/flower.svg mode:=smooth"': [(None, "Done drawing 'flower.svg'")],
     'make run ARGS="letter:=K"': [('rosrun turtle_letters draw.py L', "Done drawing 'L'")],
+    f'{LAB} view:=true': [(None, 'View: the room at http://127.0.0.1:8080/')],
     f'{LAB} mode:=feedback': [
         ("rostopic pub -1 /turtlebot_controller/svg std_msgs/String "
          "\"data: '$PWD/doc/flower.svg'\"", "Drawing 'flower.svg', 9 strokes")],
