@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """The viewer in a real browser (headless Chromium through Selenium): the
-page's canvas against the simulator's own saved canvas, each turtle's name
-and the drawings table, canvas/image, the page reconnecting by itself after
-the viewer restarts, and no error in the browser's console."""
+page's canvas against the simulator's own saved canvas, each turtle's name,
+the drawings table and the scoreboard's, canvas/image (as image_view's
+image_saver saves it) and /canvas.png, the
+page reconnecting by itself after the viewer restarts, and no error in the
+browser's console."""
 import base64
 import os
 import shutil
@@ -17,34 +19,26 @@ import rospy
 import rostest
 from PyQt5.QtGui import QColor, QImage
 from sensor_msgs.msg import Image
+from std_msgs.msg import String
 from std_srvs.srv import Trigger
 from turtlesim.msg import Pose
+from turtlesim.srv import TeleportAbsolute
 
+from support.browser import browser, have_browser
 from support.nodes import NodeProcess, wait_until
 from turtle_letters.msg import DrawAction, DrawGoal
 
 BACKGROUND = (69, 86, 255)
-CHROMEDRIVER = '/usr/bin/chromedriver'
 NEAR = 2            # px: a stroke's edge may fall a pixel or two either way
 AGREE = 0.97        # share of ink pixels that must have ink near them in the other picture
 ICON = 20           # px around the turtle: its icon covers the saved canvas there
+TABLE = 'student  letter  verdict\nturtle1  L       pass'     # as the scoreboard publishes it
 
 
 def free_port():
     with socket.socket() as s:
         s.bind(('127.0.0.1', 0))
         return s.getsockname()[1]
-
-
-def browser(folder):
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    options = webdriver.ChromeOptions()
-    for argument in ('--headless=new', '--no-sandbox', '--disable-gpu',
-                     f'--user-data-dir={folder}', '--window-size=1000,800'):
-        options.add_argument(argument)
-    options.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
-    return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
 
 def ink(image, skip=None):
@@ -68,7 +62,7 @@ def near_share(pixels, others):
     return near / max(len(pixels), 1)
 
 
-@unittest.skipUnless(os.path.exists(CHROMEDRIVER), 'no chromium-driver here (make deps installs it)')
+@unittest.skipUnless(have_browser(), 'no chromium-driver here (make deps installs it)')
 class ViewerInABrowser(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -87,6 +81,8 @@ class ViewerInABrowser(unittest.TestCase):
         assert client.wait_for_result(rospy.Duration(120)), 'the L was not drawn in 120 s'
         cls.result = client.get_result()
         cls.pose = rospy.wait_for_message('/turtle1/pose', Pose, timeout=10)
+        cls.scoreboard = rospy.Publisher('/scoreboard', String, queue_size=1, latch=True)
+        cls.scoreboard.publish(String(TABLE))
 
     @classmethod
     def tearDownClass(cls):
@@ -154,6 +150,8 @@ class ViewerInABrowser(unittest.TestCase):
         done = self.driver.execute_script(
             "return document.querySelector('#drawings progress').value")
         self.assertEqual(done, 1)
+        self.wait_for_page(lambda: self.driver.find_element('id', 'scoreboard').text == TABLE,
+                           "the scoreboard's table on the page")
 
     def test_4_the_canvas_as_an_image_topic_and_a_png(self):
         message = rospy.wait_for_message('/canvas/image', Image, timeout=10)
@@ -164,6 +162,18 @@ class ViewerInABrowser(unittest.TestCase):
         png.loadFromData(urllib.request.urlopen(self.url + 'canvas.png', timeout=5).read(), 'PNG')
         self.assertEqual(ink(image), ink(png))
         self.assertGreater(near_share(ink(image), ink(self.page_canvas())), AGREE)
+        folder = tempfile.mkdtemp(prefix='turtle_letters_image_saver_')
+        saver = NodeProcess('image_view', 'image_saver', 'image:=/canvas/image',
+                            f'_filename_format:={folder}/frame%04i.png')
+        try:
+            wait_until(lambda: len(os.listdir(folder)) >= 2, 20, "image_view's image_saver to "
+                       'save the canvas', saver.output)
+        finally:
+            saver.stop()
+        saved = QImage(os.path.join(folder, sorted(os.listdir(folder))[-1]))
+        self.assertGreater(near_share(ink(saved), ink(png)), AGREE)
+        self.assertGreater(near_share(ink(png), ink(saved)), AGREE)
+        shutil.rmtree(folder, ignore_errors=True)
 
     def test_5_the_page_reconnects_by_itself_after_the_viewer_restarts(self):
         self.driver.execute_script('window.sameLoad = true')
@@ -173,10 +183,7 @@ class ViewerInABrowser(unittest.TestCase):
         self.wait_for_page(lambda: self.status() == 'live', 'live again')
         self.assertTrue(self.driver.execute_script('return window.sameLoad === true'),
                         'the page was reloaded')
-        turned = rospy.ServiceProxy('/turtle1/teleport_absolute',
-                                    __import__('turtlesim.srv', fromlist=['TeleportAbsolute'])
-                                    .TeleportAbsolute)
-        turned(2.0, 3.0, 0.0)
+        rospy.ServiceProxy('/turtle1/teleport_absolute', TeleportAbsolute)(2.0, 3.0, 0.0)
         self.wait_for_page(lambda: self.driver.execute_script('return turtles.turtle1')[:2]
                            == [90.0, 364.0], 'turtle1 where it was put, on the page')
         unexpected = [e for e in self.errors() if 'WebSocket connection' not in e]

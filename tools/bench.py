@@ -16,7 +16,7 @@ Lena's L with and without the sandbox (its cost).
 
 Usage: bench.py [--reps N] [--letter N] [--modes timed,timed-wall,feedback] [--loads idle,loaded]
                 [--classroom 1,10,30] [--parallel-word yes|no] [--grade-class 30]
-                [--fairness yes|no] [--sandbox-cost yes|no]
+                [--fairness yes|no] [--sandbox-cost yes|no] [--viewer 1,30]
 """
 import argparse
 import json
@@ -48,6 +48,7 @@ from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # 
 from turtle_letters.grading.procstat import cpu_seconds, rss_mb  # noqa: E402
 from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
 from bench_grading import alone_runs, class_run, grading_lines, sandbox_cost  # noqa: E402
+from bench_viewer import viewer_lines, viewer_run  # noqa: E402
 
 # Loaded, a command that misses turtlesim's 16 ms tick is replaced by the one
 # before, applied once more: smooth mode then runs on up to a tick's move
@@ -353,6 +354,7 @@ def table(results, sim):
     lines.extend(word_lines(results))
     lines.extend(classroom_lines(results))
     lines.extend(grading_lines(results))
+    lines.extend(viewer_lines(results))
     sim_f = results['simulator_figures']
     idle, ten = sim_f['idle'], sim_f['ten_moving']
 
@@ -399,6 +401,8 @@ def main():
                         help="the lab's submission graded alone 3 times, against the class")
     parser.add_argument('--sandbox-cost', default='yes', choices=('yes', 'no'),
                         help="Lena's L graded 3 times in the sandbox and 3 times without (root)")
+    parser.add_argument('--viewer', default='1,30',
+                        help='turtles drawing while the viewer is measured, per run ("" for none)')
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
@@ -437,6 +441,9 @@ def main():
             print(f'bench: classroom, {turtles} turtles at once...', flush=True)
             results.setdefault('classroom', []).append(
                 classroom_run(processes, sim.pid, int(turtles)))
+        for turtles in filter(None, args.viewer.split(',')):
+            print(f'bench: the viewer, {turtles} turtles drawing...', flush=True)
+            results.setdefault('viewer', []).append(viewer_run(processes, int(turtles)))
         if args.parallel_word == 'yes':
             print('bench: a parallel word, and its slowest letter alone...', flush=True)
             results['parallel_word'] = parallel_word_run(processes)

@@ -1,0 +1,165 @@
+"""`make bench`'s viewer group: view.py beside the bench's turtlesim, with 1
+and with 30 turtles driving circles, pen down.
+
+- Latency, measured in the browser: headless Chromium opens the page, and a
+  WebSocket of the browser's own on /room notes when each update showing
+  turtle1 arrives (the browser's clock); the bench notes when each of
+  turtle1's poses arrives at it (the same machine's clock). A pose's latency
+  is from the bench having it to the browser having it.
+- The viewer's CPU, with 30 turtles and 10 pages open (the browser's, and
+  nine of the bench's own WebSocket clients, which read every update).
+- Bytes a second each page is sent, while 30 turtles draw.
+"""
+import asyncio
+import math
+import socket
+import statistics
+import tempfile
+import threading
+import time
+import urllib.request
+
+import rospy
+import tornado.websocket
+from geometry_msgs.msg import Twist
+from std_srvs.srv import Empty
+from turtlesim.msg import Pose
+from turtlesim.srv import Spawn
+
+from support.browser import browser
+from turtle_letters.grading.procstat import cpu_seconds
+from turtle_letters.viewer.trails import to_pixels
+
+LATENCY_TARGET_MS, CPU_TARGET_PCT, BYTES_TARGET = 100.0, 10.0, 100_000
+WINDOW = 20.0           # s each figure is measured over
+PAGES = 10
+LISTEN = """
+window.arrivals = [];
+const ws = new WebSocket('ws://' + location.host + '/room');
+ws.onmessage = (e) => {
+  const m = JSON.parse(e.data);
+  const t = m.turtles && m.turtles.turtle1;
+  if (t) window.arrivals.push([performance.timeOrigin + performance.now(), t[0], t[1]]);
+};
+"""
+
+
+def _free_port():
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+def _spawn_turtles(count):
+    spawn = rospy.ServiceProxy('/spawn', Spawn)
+    for i in range(2, count + 1):
+        spawn(1.0 + (i % 6) * 1.8, 1.0 + (i // 6) * 1.8, 0.0, f'turtle{i}')
+
+
+def _drive(count, stop):
+    """Every turtle in circles of 0.5 m, pen down, until `stop` is set."""
+    publishers = [rospy.Publisher(f'/turtle{i}/cmd_vel', Twist, queue_size=1)
+                  for i in range(1, count + 1)]
+    twist = Twist()
+    twist.linear.x, twist.angular.z = 1.0, 2.0
+    while not stop.is_set():
+        for publisher in publishers:
+            publisher.publish(twist)
+        time.sleep(0.1)
+
+
+class PoseTimes:
+    """When each of turtle1's poses came to the bench, by where it shows on the page."""
+
+    def __init__(self):
+        self.times = {}
+        self.subscriber = rospy.Subscriber('/turtle1/pose', Pose, self._on_pose, queue_size=100)
+
+    def _on_pose(self, pose):
+        x, y = to_pixels(pose.x, pose.y)
+        self.times.setdefault((round(x, 1), round(y, 1)), time.time() * 1000)
+
+
+def _latencies(driver, poses):
+    arrivals = driver.execute_script('return window.arrivals')
+    found = [at - poses.times[(x, y)] for at, x, y in arrivals if (x, y) in poses.times]
+    return sorted(found)
+
+
+def _reader(url, counts, stop):
+    """A page of the bench's own: reads every update, counting its bytes."""
+    async def read():
+        connection = await tornado.websocket.websocket_connect(url)
+        while not stop.is_set():
+            message = await connection.read_message()
+            if message is None:
+                return
+            counts.append((time.monotonic(), len(message)))
+    asyncio.run(read())
+
+
+def viewer_run(processes, turtles):
+    """Latency with `turtles` turtles; with PAGES pages, the viewer's CPU and bytes per page."""
+    rospy.ServiceProxy('/reset', Empty)()
+    _spawn_turtles(turtles)
+    port = _free_port()
+    viewer = processes.start('view', 'rosrun', 'turtle_letters', 'view.py', f'_port:={port}')
+    url = f'http://127.0.0.1:{port}/'
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline:
+        try:
+            urllib.request.urlopen(url, timeout=1)
+            break
+        except OSError:
+            time.sleep(0.2)
+    stop, profile = threading.Event(), tempfile.mkdtemp(prefix='bench_chromium_')
+    driving = threading.Thread(target=_drive, args=(turtles, stop), daemon=True)
+    driving.start()
+    driver = browser(profile)
+    readers, counts = [], [[] for _ in range(PAGES - 1)]
+    try:
+        driver.get(url)
+        poses = PoseTimes()
+        driver.execute_script(LISTEN)
+        for page_counts in counts:
+            readers.append(threading.Thread(target=_reader, args=(
+                url.replace('http', 'ws') + 'room', page_counts, stop), daemon=True))
+            readers[-1].start()
+        time.sleep(3.0)         # every turtle's circle under way, every page reading
+        used, started = cpu_seconds(viewer.pid), time.monotonic()
+        time.sleep(WINDOW)
+        cpu_pct = 100 * (cpu_seconds(viewer.pid) - used) / (time.monotonic() - started)
+        latencies = _latencies(driver, poses)
+        bytes_per_s = [sum(n for t, n in c if t >= started) / WINDOW for c in counts]
+        poses.subscriber.unregister()
+    finally:
+        stop.set()
+        driver.quit()
+        processes.stop(viewer)
+    return dict(turtles=turtles, pages=PAGES, cpu_pct=cpu_pct,
+                latency_median_ms=statistics.median(latencies) if latencies else math.nan,
+                latency_p95_ms=latencies[int(0.95 * (len(latencies) - 1))] if latencies else math.nan,
+                latency_samples=len(latencies),
+                bytes_per_s_median=statistics.median(bytes_per_s),
+                bytes_per_s_worst=max(bytes_per_s))
+
+
+def viewer_lines(results):
+    runs = results.get('viewer')
+    if not runs:
+        return []
+    lines = ['']
+    for r in runs:
+        late = r['latency_p95_ms'] > LATENCY_TARGET_MS
+        lines.append(
+            f"viewer, {r['turtles']} turtles drawing, {r['pages']} pages: pose to page median "
+            f"{r['latency_median_ms']:.0f} ms, 95th percentile {r['latency_p95_ms']:.0f}"
+            f"{'!' if late else ''} ms ({r['latency_samples']} poses); viewer CPU "
+            f"{r['cpu_pct']:.1f}{'!' if r['cpu_pct'] > CPU_TARGET_PCT and r['turtles'] >= 30 else ''}"
+            f"%; per page {r['bytes_per_s_median'] / 1000:.1f} kB/s (worst "
+            f"{r['bytes_per_s_worst'] / 1000:.1f}"
+            f"{'!' if r['bytes_per_s_worst'] > BYTES_TARGET else ''})")
+    lines.append(f'Viewer targets: pose to page <= {LATENCY_TARGET_MS:g} ms (95th percentile); '
+                 f'<= {CPU_TARGET_PCT:g}% of a core for 30 turtles and {PAGES} pages; '
+                 f'<= {BYTES_TARGET / 1000:g} kB/s per page.')
+    return lines
