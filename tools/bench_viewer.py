@@ -9,6 +9,9 @@ and with 30 turtles driving circles, pen down.
 - The viewer's CPU, with 30 turtles and 10 pages open (the browser's, and
   nine of the bench's own WebSocket clients, which read every update).
 - Bytes a second each page is sent, while 30 turtles draw.
+- The floor under the viewer's CPU: a node that only subscribes to the
+  same pose and color_sensor topics, unread (rospy.AnyMsg), its callbacks
+  empty: what rospy alone costs for that many messages.
 """
 import asyncio
 import math
@@ -69,7 +72,8 @@ def _drive(count, stop):
 
 
 class PoseTimes:
-    """When each of turtle1's poses came to the bench, by where it shows on the page."""
+    """When each of turtle1's poses came to the bench, by where it shows on
+    the page (a circle comes back to a place: each time it came is kept)."""
 
     def __init__(self):
         self.times = {}
@@ -77,13 +81,42 @@ class PoseTimes:
 
     def _on_pose(self, pose):
         x, y = to_pixels(pose.x, pose.y)
-        self.times.setdefault((round(x, 1), round(y, 1)), time.time() * 1000)
+        self.times.setdefault((round(x, 1), round(y, 1)), []).append(time.time() * 1000)
+
+    def latency(self, at, x, y):
+        """ms from the latest time the bench had a pose at (x, y) before `at`, or None."""
+        before = [t for t in self.times.get((x, y), []) if t <= at]
+        return at - before[-1] if before else None
+
+
+FLOOR = """
+import rospy
+rospy.init_node('bench_rospy_floor')
+for i in range(1, {turtles} + 1):
+    for topic in ('pose', 'color_sensor'):
+        rospy.Subscriber(f'/turtle{{i}}/{{topic}}', rospy.AnyMsg, lambda m: None, queue_size=100)
+rospy.spin()
+"""
+
+
+def _cpu_pct(pid, seconds):
+    used, started = cpu_seconds(pid), time.monotonic()
+    time.sleep(seconds)
+    return 100 * (cpu_seconds(pid) - used) / (time.monotonic() - started)
+
+
+def _rospy_floor(processes, turtles):
+    floor = processes.start('rospy_floor', '/usr/bin/python3', '-c', FLOOR.format(turtles=turtles))
+    try:
+        time.sleep(3.0)
+        return _cpu_pct(floor.pid, WINDOW / 2)
+    finally:
+        processes.stop(floor)
 
 
 def _latencies(driver, poses):
     arrivals = driver.execute_script('return window.arrivals')
-    found = [at - poses.times[(x, y)] for at, x, y in arrivals if (x, y) in poses.times]
-    return sorted(found)
+    return sorted(filter(lambda v: v is not None, (poses.latency(*a) for a in arrivals)))
 
 
 def _reader(url, counts, stop):
@@ -126,17 +159,18 @@ def viewer_run(processes, turtles):
                 url.replace('http', 'ws') + 'room', page_counts, stop), daemon=True))
             readers[-1].start()
         time.sleep(3.0)         # every turtle's circle under way, every page reading
-        used, started = cpu_seconds(viewer.pid), time.monotonic()
-        time.sleep(WINDOW)
-        cpu_pct = 100 * (cpu_seconds(viewer.pid) - used) / (time.monotonic() - started)
+        started = time.monotonic()
+        cpu_pct = _cpu_pct(viewer.pid, WINDOW)
         latencies = _latencies(driver, poses)
         bytes_per_s = [sum(n for t, n in c if t >= started) / WINDOW for c in counts]
         poses.subscriber.unregister()
+        processes.stop(viewer)      # the turtles still drive, for the floor
+        floor_pct = _rospy_floor(processes, turtles)
     finally:
         stop.set()
         driver.quit()
         processes.stop(viewer)
-    return dict(turtles=turtles, pages=PAGES, cpu_pct=cpu_pct,
+    return dict(turtles=turtles, pages=PAGES, cpu_pct=cpu_pct, rospy_floor_pct=floor_pct,
                 latency_median_ms=statistics.median(latencies) if latencies else math.nan,
                 latency_p95_ms=latencies[int(0.95 * (len(latencies) - 1))] if latencies else math.nan,
                 latency_samples=len(latencies),
@@ -156,7 +190,8 @@ def viewer_lines(results):
             f"{r['latency_median_ms']:.0f} ms, 95th percentile {r['latency_p95_ms']:.0f}"
             f"{'!' if late else ''} ms ({r['latency_samples']} poses); viewer CPU "
             f"{r['cpu_pct']:.1f}{'!' if r['cpu_pct'] > CPU_TARGET_PCT and r['turtles'] >= 30 else ''}"
-            f"%; per page {r['bytes_per_s_median'] / 1000:.1f} kB/s (worst "
+            f"% (rospy alone, subscribed to the same topics: {r['rospy_floor_pct']:.1f}%); "
+            f"per page {r['bytes_per_s_median'] / 1000:.1f} kB/s (worst "
             f"{r['bytes_per_s_worst'] / 1000:.1f}"
             f"{'!' if r['bytes_per_s_worst'] > BYTES_TARGET else ''})")
     lines.append(f'Viewer targets: pose to page <= {LATENCY_TARGET_MS:g} ms (95th percentile); '

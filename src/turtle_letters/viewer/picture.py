@@ -25,11 +25,15 @@ class Painting:
             if clears != self.clears:
                 self.image.fill(QColor(*self.trails.background))
                 self.clears, self.count = clears, 0
-            painter = QPainter(self.image)
+            by_colour = {}      # a pen costs more to set than a line to draw
             for stroke in strokes:
-                painter.setPen(QPen(QColor(*stroke.colour), PEN_WIDTH, Qt.SolidLine, Qt.SquareCap))
-                painter.drawLine(QLineF(QPointF(*to_pixels(stroke.x0, stroke.y0)),
-                                        QPointF(*to_pixels(stroke.x1, stroke.y1))))
+                by_colour.setdefault(stroke.colour, []).append(
+                    QLineF(QPointF(*to_pixels(stroke.x0, stroke.y0)),
+                           QPointF(*to_pixels(stroke.x1, stroke.y1))))
+            painter = QPainter(self.image)
+            for colour, lines in by_colour.items():
+                painter.setPen(QPen(QColor(*colour), PEN_WIDTH, Qt.SolidLine, Qt.SquareCap))
+                painter.drawLines(lines)
             painter.end()
             self.count += len(strokes)
 

@@ -102,7 +102,7 @@ class Page(tornado.websocket.WebSocketHandler):
             self.close(1013, f'the viewer shows {self.pages.most} pages already: try again later')
             return
         self.pages.open.add(self)
-        self.send(self.snapshot())
+        self.send(json.dumps(self.snapshot()))
 
     def on_message(self, message):
         """Read-only: whatever a page sends changes nothing."""
@@ -112,45 +112,54 @@ class Page(tornado.websocket.WebSocketHandler):
 
     def snapshot(self):
         clears, count, png = self.view.painting.snapshot()
-        _, _, turtles = self.view.trails.since(clears, count)
         self.clears, self.count = clears, count
-        self.sent_turtles = turtles_message(turtles, self.view.to_pixels)
+        self.sent_turtles = turtles_message(self.view.trails.turtles_now(), self.view.to_pixels)
         self.sent_room = self.view.room()
         return dict(kind='snapshot', background=_colour(self.view.trails.background),
                     canvas='data:image/png;base64,' + base64.b64encode(png).decode(),
                     turtles=self.sent_turtles, room=self.sent_room)
 
-    def update(self):
-        """What changed since this page was last sent anything, or None."""
-        clears, strokes, turtles = self.view.trails.since(self.clears, self.count)
-        if clears != self.clears or len(strokes) > CATCH_UP:
-            return self.snapshot()
-        self.count += len(strokes)
-        now = turtles_message(turtles, self.view.to_pixels)
+    def update(self, shared):
+        """What changed since this page was last sent anything, as JSON, or
+        None. `shared` holds what this tick has worked out already: pages
+        that were sent the same are sent the same, worked out once."""
+        key = (self.clears, self.count)
+        if key not in shared:
+            clears, strokes, turtles = self.view.trails.since(*key)
+            shared[key] = (clears, len(strokes), json.dumps(
+                strokes_message(strokes, self.view.to_pixels)))
+        if 'turtles' not in shared:
+            shared['turtles'] = turtles_message(self.view.trails.turtles_now(),
+                                                self.view.to_pixels)
+            shared['room'] = self.view.room()
+        clears, new, strokes_json = shared[key]
+        if clears != self.clears or new > CATCH_UP:
+            return json.dumps(self.snapshot())
+        self.count += new
+        now, room = shared['turtles'], shared['room']
         moved = {n: t for n, t in now.items() if self.sent_turtles.get(n) != t}
         gone = sorted(set(self.sent_turtles) - set(now))
-        room = self.view.room()
         changed = {k: v for k, v in room.items() if self.sent_room.get(k) != v}
         self.sent_turtles, self.sent_room = now, room
-        if not (strokes or moved or gone or changed):
+        if not (new or moved or gone or changed):
             return None
-        return dict(kind='update', strokes=strokes_message(strokes, self.view.to_pixels),
-                    turtles=moved, gone=gone, room=changed)
+        return (f'{{"kind": "update", "strokes": {strokes_json}, "turtles": {json.dumps(moved)}, '
+                f'"gone": {json.dumps(gone)}, "room": {json.dumps(changed)}}}')
 
-    def send(self, message):
+    def send(self, text):
         try:
-            self.pending, self.since = self.write_message(json.dumps(message)), time.monotonic()
+            self.pending, self.since = self.write_message(text), time.monotonic()
         except tornado.websocket.WebSocketClosedError:
             self.pages.open.discard(self)
 
-    def tick(self):
+    def tick(self, shared):
         """Sends what changed, unless the last update is still unread."""
         if self.pending is not None and not self.pending.done():
             if time.monotonic() - self.since > STALLED:
                 self.close(1008, 'this page stopped reading the room')
                 self.pages.open.discard(self)
             return
-        message = self.update()
+        message = self.update(shared)
         if message is not None:
             self.send(message)
 
@@ -162,8 +171,9 @@ class Pages:
         self.most, self.open = most, set()
 
     def tick(self):
+        shared = {}
         for page in list(self.open):
-            page.tick()
+            page.tick(shared)
 
 
 def application(view, web_folder, most_pages):

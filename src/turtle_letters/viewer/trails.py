@@ -93,6 +93,10 @@ class Trails:
             self.strokes, self.turtles = [], {}
             self.clears += 1
 
+    def turtles_now(self):
+        with self.lock:
+            return dict(self.turtles)
+
     def since(self, clears, count):
         """(clears, strokes after the first `count`, turtles) for a reader
         that has seen `count` strokes since clear number `clears`; all the
