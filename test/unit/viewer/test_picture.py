@@ -1,15 +1,10 @@
 """The rebuilt canvas as pixels: each stroke in its colour, the background
 again after a clear."""
+from support.ticks import drive
 from turtle_letters.viewer.picture import Painting
 from turtle_letters.viewer.trails import DEFAULT_BACKGROUND, Trails, to_pixels
 
 RED = (255, 0, 0)
-
-
-def drive(trails, name, points, colour):
-    for x, y in points:
-        trails.pose(name, x, y, 0.0)
-        trails.colour(name, colour)
 
 
 def test_the_painting_shows_each_stroke_in_its_colour_and_starts_over_after_a_clear():

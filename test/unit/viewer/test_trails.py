@@ -2,17 +2,11 @@
 where the colour is a pen's, none where it is the background's."""
 import pytest
 
+from support.ticks import drive
 from turtle_letters.viewer.trails import DEFAULT_BACKGROUND, Stroke, Trails, to_pixels
 
 PEN = (179, 184, 255)
 RED = (255, 0, 0)
-
-
-def drive(trails, name, points, colour):
-    """A tick per point: the pose, then the colour under it, as turtlesim publishes them."""
-    for x, y in points:
-        trails.pose(name, x, y, 0.0)
-        trails.colour(name, colour)
 
 
 def test_a_pen_down_leaves_a_stroke_per_tick_in_its_colour():
