@@ -1,7 +1,9 @@
 """Real nodes for tests and the benchmark: started and stopped as processes,
 waited for on conditions (never for a fixed time), their poses and logs
 recorded."""
+import atexit
 import os
+import shutil
 import signal
 import subprocess
 import tempfile
@@ -59,6 +61,7 @@ class NodeProcess:
 
     def __init__(self, *command, stdin=subprocess.DEVNULL, **env):
         self.dir = tempfile.mkdtemp(prefix='turtle_letters_node_')
+        atexit.register(shutil.rmtree, self.dir, True)     # its output: read until the test ends
         self.out_path = os.path.join(self.dir, 'out')
         with open(self.out_path, 'w') as out:
             self.process = subprocess.Popen(['rosrun', *command], stdin=stdin, stdout=out,

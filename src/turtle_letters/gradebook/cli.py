@@ -44,7 +44,7 @@ def arguments(argv):
                         help='run each submission unisolated, where the machine is a sandbox '
                              "already (Gradescope's container); a master port each, no more")
     parser.add_argument('--gradescope', action='store_true',
-                        help=f'grade AUTOGRADER/submission into AUTOGRADER/results/results.json')
+                        help='grade AUTOGRADER/submission into AUTOGRADER/results/results.json')
     parser.add_argument('--autograder', default=GRADESCOPE,
                         help=f"with --gradescope: Gradescope's folder ({GRADESCOPE})")
     args = parser.parse_args(argv)
@@ -223,9 +223,12 @@ def grade_gradescope(args, rubric):
     expected = args.letter.upper() or first_letter(name)
     student = Student('submission', name, expected, os.path.join(root, 'submission'))
     out = tempfile.mkdtemp(prefix='turtle_letters_gradescope_')
-    rows = grade_all([student], rubric, out, [out], args)
-    os.makedirs(os.path.join(root, 'results'), exist_ok=True)
-    reports.write_results(os.path.join(root, 'results', 'results.json'), rows[0])
+    try:
+        rows = grade_all([student], rubric, out, [out], args)
+        os.makedirs(os.path.join(root, 'results'), exist_ok=True)
+        reports.write_results(os.path.join(root, 'results', 'results.json'), rows[0])
+    finally:
+        shutil.rmtree(out, ignore_errors=True)
     return 0
 
 
