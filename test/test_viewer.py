@@ -25,7 +25,7 @@ from turtlesim.msg import Pose
 from turtlesim.srv import TeleportAbsolute
 
 from support.browser import browser, have_browser
-from support.nodes import NodeProcess, wait_until
+from support.nodes import NodeProcess, connections, wait_until
 from turtle_letters.msg import DrawAction, DrawGoal
 
 BACKGROUND = (69, 86, 255)
@@ -77,6 +77,9 @@ class ViewerInABrowser(unittest.TestCase):
                           'the page live, with turtle1')
         client = actionlib.SimpleActionClient('/draw', DrawAction)
         assert client.wait_for_server(rospy.Duration(30)), 'no draw action'
+        # A goal is not latched: the viewer sees its text only once it hears the goal topic.
+        wait_until(lambda: connections('/view', '/draw/goal', 'i'), 30,
+                   "the viewer connected to the draw action's goal topic", cls.viewer.output)
         client.send_goal(DrawGoal(text='L'))
         assert client.wait_for_result(rospy.Duration(120)), 'the L was not drawn in 120 s'
         cls.result = client.get_result()
