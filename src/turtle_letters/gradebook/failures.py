@@ -4,8 +4,8 @@ files are the submission's: read as plain files only (no link, no pipe),
 and only their last part."""
 import os
 import re
-import stat
 
+from ..grading.files import read_plain
 from . import observations as seen
 
 ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
@@ -53,15 +53,7 @@ def node_logs(work, node=''):
 
 def _tail(path):
     """The end of a plain file; nothing from a link, a pipe or a device."""
-    try:
-        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
-    except OSError:
-        return ''
-    with os.fdopen(fd, 'rb') as f:
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
-            return ''
-        f.seek(max(0, os.fstat(fd).st_size - LOG_TAIL))
-        return f.read(LOG_TAIL).decode('utf-8', 'replace')
+    return (read_plain(path, LOG_TAIL, from_end=True) or b'').decode('utf-8', 'replace')
 
 
 def first_death(output, work):

@@ -139,8 +139,9 @@ def _wiped(facts, what):
 
 
 def _letter(facts, _):
-    if _wiped(facts, 'clear'):
-        return 0.0, f'{_wiped(facts, "clear")}: the letter on its canvas is not whole'
+    cleared = _wiped(facts, 'clear')
+    if cleared:
+        return 0.0, f'{cleared}: the letter on its canvas is not whole'
     reading = facts.reading
     if reading is None or reading.best is None:
         return 0.0, 'nothing was drawn'
@@ -182,8 +183,9 @@ def _driven(facts, _):
     if d.made_up:
         return 0.0, (f'poses of the turtle were published by {", ".join(d.made_up)}, not '
                      f'turtlesim: those poses are not graded')
-    if _wiped(facts, 'reset'):
-        return 0.0, f'{_wiped(facts, "reset")}: the turtle was put back, not driven'
+    reset = _wiped(facts, 'reset')
+    if reset:
+        return 0.0, f'{reset}: the turtle was put back, not driven'
     if d.teleports:
         t, step = max(d.teleports, key=lambda jump: jump[1])
         return 0.0, (f'the turtle jumped {step:.2f} m at once, farther than any command could '

@@ -6,10 +6,10 @@ grader's watcher (watch.py) joins the namespace, not the sandbox.
 
 `problem()` tries the sandbox out and says in one line what keeps it from
 being made here (no root for the namespace, no bubblewrap, no cgroup with
-memory and pids, a container that forbids namespaces); the grader then refuses to grade. Only `isolated=False`
-(grade_class.py --no-sandbox, for a container that is a sandbox already,
-as Gradescope's is) runs a submission without one: then each gets a master
-port of its own, and nothing more.
+memory and pids, a container that forbids namespaces); the grader then
+refuses to grade. Only `isolated=False` (grade_class.py --no-sandbox, for a
+container that is a sandbox already, as Gradescope's is) runs a submission
+without one: then each gets a master port of its own, and nothing more.
 """
 import itertools
 import os

@@ -56,7 +56,8 @@ def _env(work, master_uri):
     env = {name: os.environ[name] for name in ROS_VARIABLES if name in os.environ}
     env.update(HOME=os.path.join(work, 'home'), ROS_HOME=os.path.join(work, 'home', '.ros'),
                PATH=f"{os.path.join(work, 'bin')}:/usr/bin:/bin:{os.environ.get('PATH', '')}",
-               ROS_MASTER_URI=master_uri, ROS_IP='127.0.0.1', QT_QPA_PLATFORM='offscreen', LANG='C.UTF-8', TERM='xterm', PYTHONUNBUFFERED='1')
+               ROS_MASTER_URI=master_uri, ROS_IP='127.0.0.1', QT_QPA_PLATFORM='offscreen',
+               LANG='C.UTF-8', TERM='xterm', PYTHONUNBUFFERED='1')
     return env
 
 
@@ -262,7 +263,8 @@ def _explain(result, text, work):
         result.launch = result.launch._replace(says=why_not_launched(text, result.events, work))
     if result.talker is not None and not result.talker.ok:
         why = talker_failure(text, work)
-        result.talker = result.talker._replace(says=result.talker.says + (f': {why}' if why else ''))
+        if why:
+            result.talker = result.talker._replace(says=f'{result.talker.says}: {why}')
     if result.still_from is not None:
         graph = seen.last_graph(result.events)
         result.stuck = why_still(text[result.still_from:], work,

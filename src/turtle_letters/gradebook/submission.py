@@ -4,9 +4,10 @@ files are read as plain XML, never run (a launch file's $(eval) is Python).
 """
 import os
 import shutil
-import stat
 import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
+
+from ..grading.files import read_plain
 
 SKIPPED = {'.git', 'build', 'devel', 'install', 'logs', '__pycache__'}
 MAX_BYTES = 1 << 20      # a package.xml or launch file larger than this is not read
@@ -35,18 +36,13 @@ def package_folders(top):
 def _xml(path):
     """A plain file's XML; None for a link, a pipe, a device, a file over
     MAX_BYTES or bad XML (a submission's links could point anywhere)."""
-    try:
-        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
-    except OSError:
+    text = read_plain(path, MAX_BYTES + 1)
+    if text is None or len(text) > MAX_BYTES:
         return None
-    with os.fdopen(fd, 'rb') as f:
-        info = os.fstat(fd)
-        if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_BYTES:
-            return None
-        try:
-            return ElementTree.fromstring(f.read())
-        except ElementTree.ParseError:
-            return None
+    try:
+        return ElementTree.fromstring(text)
+    except ElementTree.ParseError:
+        return None
 
 
 def launch_files(folder):

@@ -22,11 +22,12 @@ from rosgraph_msgs.msg import Log
 from std_msgs.msg import String
 from turtlesim.msg import Pose
 
+from ..motion.driver import CANVAS_WORDS
+
 NAME = '/grade_watch'
 GRAPH_PERIOD = 0.5      # s between reports of the graph
 COUNT_PERIOD = 0.1      # s between counts of cmd_vel messages
 CHATTER_SHOWN = 5       # /chatter messages reported whole each COUNT_PERIOD
-CANVAS_WORDS = {'Clearing turtlesim.': 'clear', 'Resetting turtlesim.': 'reset'}
 
 
 class Reporter:

@@ -9,6 +9,7 @@ from PyQt5.QtCore import QPointF, QRectF, Qt  # noqa: E402
 from PyQt5.QtGui import QColor, QFont, QImage, QPainter, QPen  # noqa: E402
 from PyQt5.QtWidgets import QApplication  # noqa: E402
 
+from ..letters.layout import WORLD_SIZE  # noqa: E402
 from .scoring import distance_to_lines  # noqa: E402
 
 MAIN_SCALE = 90.0          # px per m in the overview
@@ -98,7 +99,6 @@ def draw(path_png, strokes, paths, colours, half_box=0.01):
     image.save(path_png, 'PNG')
 
 
-CANVAS_M = 11.088889        # turtlesim's canvas, m a side
 CANVAS_SCALE = 120.0        # px per m
 
 
@@ -108,7 +108,7 @@ def draw_canvas(path_png, drawings, tolerance=0.02):
     `tolerance` m of them and dotted elsewhere (pen-up moves, mistakes), the
     label's lines above."""
     app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
-    side = int(CANVAS_M * CANVAS_SCALE)
+    side = int(WORLD_SIZE * CANVAS_SCALE)
     image = QImage(side, side, QImage.Format_RGB32)
     image.fill(QColor('white'))
     painter = QPainter(image)
@@ -117,7 +117,7 @@ def draw_canvas(path_png, drawings, tolerance=0.02):
     line_height = painter.fontMetrics().height()
 
     def px(p):
-        return QPointF(p[0] * CANVAS_SCALE, (CANVAS_M - p[1]) * CANVAS_SCALE)
+        return QPointF(p[0] * CANVAS_SCALE, (WORLD_SIZE - p[1]) * CANVAS_SCALE)
 
     for strokes, path, label, passed in drawings:
         painter.setPen(QPen(QColor(200, 200, 200), 5))

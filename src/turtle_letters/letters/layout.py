@@ -4,7 +4,9 @@ from typing import List, Tuple
 
 from .font import BUILTIN, Font, shown
 
-WORLD_SIZE = 499 / 45.0     # turtlesim's usable canvas, meters
+CANVAS_PIXELS = 500         # turtlesim's canvas is this many pixels square
+PIXELS_PER_METRE = 45.0
+WORLD_SIZE = (CANVAS_PIXELS - 1) / PIXELS_PER_METRE    # its usable size, meters
 MARGIN = 0.5                # no stroke comes closer than this to a wall
 
 

@@ -25,6 +25,8 @@ POSES_KEPT = 1000       # 16 s of ticks: the drawing thread reads far faster
 # turtlesim (which stops a turtle after 1 s without one) keeps going. One
 # command per tick from 30 turtles was most of the simulator's work.
 REPEAT_PERIOD = 0.25    # s
+# What turtlesim logs on /rosout when its canvas is cleared or reset.
+CANVAS_WORDS = {'Clearing turtlesim.': 'clear', 'Resetting turtlesim.': 'reset'}
 
 
 def beside(turtle, name):

@@ -22,16 +22,17 @@ from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import Image
 from std_msgs.msg import String
 
+from ..motion.driver import CANVAS_WORDS
+from ..letters.layout import CANVAS_PIXELS
 from ..settings import Parameter, ParameterError, positive, read_parameter
 from .picture import Painting
 from .server import application
-from .trails import CANVAS_PIXELS, DEFAULT_BACKGROUND, Trails, to_pixels
+from .trails import DEFAULT_BACKGROUND, Trails
 from .drawings import Drawings
 
 LOOK_PERIOD = 1.0       # s between looks for turtles and drawings come or gone
 POSE = struct.Struct('<3f')     # turtlesim/Pose begins x, y, theta (float32)
 COLOR = struct.Struct('<3B')    # turtlesim/Color: r, g, b (uint8)
-CANVAS_WORDS = {'Clearing turtlesim.': 'clear', 'Resetting turtlesim.': 'reset'}
 
 
 def _port(value, font=None):
@@ -69,7 +70,6 @@ class View:
     def __init__(self, background):
         self.trails = Trails(background)
         self.painting = Painting(self.trails)
-        self.to_pixels = to_pixels
         self.drawings = Drawings()
         self.scoreboard = ''
         self.turtles = {}           # name: its two subscribers
@@ -88,8 +88,9 @@ class View:
             return
         self.simulators = set(dict(services).get('/spawn', []))
         for topic, kind in topics.items():
-            if kind == 'turtlesim/Pose' and topic.endswith('/pose') and topic[:-5] not in self.turtles:
-                self._follow(topic[:-5])
+            turtle = topic[:-len('/pose')]
+            if kind == 'turtlesim/Pose' and topic.endswith('/pose') and turtle not in self.turtles:
+                self._follow(turtle)
         for name in [n for n in self.turtles if f'{n}/pose' not in topics]:
             for subscriber in self.turtles.pop(name):
                 subscriber.unregister()

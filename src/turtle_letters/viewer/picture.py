@@ -6,7 +6,8 @@ import threading
 from PyQt5.QtCore import QBuffer, QIODevice, QLineF, QPointF, Qt
 from PyQt5.QtGui import QColor, QImage, QPainter, QPen
 
-from .trails import CANVAS_PIXELS, PEN_WIDTH, to_pixels
+from ..letters.layout import CANVAS_PIXELS
+from .trails import PEN_WIDTH, to_pixels
 
 
 class Painting:

@@ -17,6 +17,8 @@ import tornado.ioloop
 import tornado.web
 import tornado.websocket
 
+from .trails import to_pixels
+
 SEND_PERIOD = 0.04      # s between updates to a page: a pose is on it within about this
 STALLED = 10.0          # s a page may leave an update unread before it is dropped
 CATCH_UP = 5000         # strokes behind past which a page gets a snapshot instead
@@ -32,7 +34,12 @@ def _colour(rgb):
     return '#%02x%02x%02x' % tuple(rgb)
 
 
-def strokes_message(strokes, to_pixels):
+def _set_safe_headers(handler):
+    for name, value in SAFE_HEADERS.items():
+        handler.set_header(name, value)
+
+
+def strokes_message(strokes):
     """Strokes as {colour: [x0, y0, x1, y1, ...]} in canvas pixels, 0.1 px apart."""
     by_colour = {}
     for s in strokes:
@@ -42,7 +49,7 @@ def strokes_message(strokes, to_pixels):
     return by_colour
 
 
-def turtles_message(turtles, to_pixels):
+def turtles_message(turtles):
     """{name: [x, y (pixels), theta (rad)]}."""
     return {name.strip('/'): [*(round(v, 1) for v in to_pixels(t.x, t.y)), round(t.theta, 2)]
             for name, t in turtles.items()}
@@ -50,8 +57,7 @@ def turtles_message(turtles, to_pixels):
 
 class Base(tornado.web.RequestHandler):
     def set_default_headers(self):
-        for name, value in SAFE_HEADERS.items():
-            self.set_header(name, value)
+        _set_safe_headers(self)
 
     def write_error(self, status_code, **_):
         """The status and its reason, never a traceback."""
@@ -94,8 +100,7 @@ class Page(tornado.websocket.WebSocketHandler):
         self.pending, self.since = None, 0.0
 
     def set_default_headers(self):
-        for name, value in SAFE_HEADERS.items():
-            self.set_header(name, value)
+        _set_safe_headers(self)
 
     def open(self):
         if len(self.pages.open) >= self.pages.most:
@@ -113,7 +118,7 @@ class Page(tornado.websocket.WebSocketHandler):
     def snapshot(self):
         clears, count, png = self.view.painting.snapshot()
         self.clears, self.count = clears, count
-        self.sent_turtles = turtles_message(self.view.trails.turtles_now(), self.view.to_pixels)
+        self.sent_turtles = turtles_message(self.view.trails.turtles_now())
         self.sent_room = self.view.room()
         return dict(kind='snapshot', background=_colour(self.view.trails.background),
                     canvas='data:image/png;base64,' + base64.b64encode(png).decode(),
@@ -126,11 +131,9 @@ class Page(tornado.websocket.WebSocketHandler):
         key = (self.clears, self.count)
         if key not in shared:
             clears, strokes, turtles = self.view.trails.since(*key)
-            shared[key] = (clears, len(strokes), json.dumps(
-                strokes_message(strokes, self.view.to_pixels)))
+            shared[key] = (clears, len(strokes), json.dumps(strokes_message(strokes)))
         if 'turtles' not in shared:
-            shared['turtles'] = turtles_message(self.view.trails.turtles_now(),
-                                                self.view.to_pixels)
+            shared['turtles'] = turtles_message(self.view.trails.turtles_now())
             shared['room'] = self.view.room()
         clears, new, strokes_json = shared[key]
         if clears != self.clears or new > CATCH_UP:
@@ -177,7 +180,7 @@ class Pages:
 
 
 def application(view, web_folder, most_pages):
-    """The server's routes; `view` has .trails, .painting, .to_pixels and .room()."""
+    """The server's routes; `view` has .trails, .painting and .room()."""
     pages = Pages(most_pages)
     routes = [(path, PageFile, dict(folder=web_folder)) for path in FILES]
     routes += [('/canvas.png', CanvasPng, dict(view=view)),

@@ -17,8 +17,8 @@ of it.
 import threading
 from typing import Dict, List, NamedTuple, Optional, Tuple
 
-CANVAS_PIXELS = 500             # the canvas is this many pixels square
-PIXELS_PER_METRE = 45.0
+from ..letters.layout import CANVAS_PIXELS, PIXELS_PER_METRE
+
 PEN_WIDTH = 3                   # px: turtlesim's default pen
 DEFAULT_BACKGROUND = (69, 86, 255)
 
@@ -88,7 +88,8 @@ class Trails:
             self.clears += 1
 
     def reset(self):
-        """turtlesim reset: the canvas cleared and every turtle gone (turtle1 comes back by its pose)."""
+        """turtlesim reset: the canvas cleared and every turtle gone
+        (turtle1 comes back by its pose)."""
         with self.lock:
             self.strokes, self.turtles = [], {}
             self.clears += 1

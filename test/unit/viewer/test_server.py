@@ -17,7 +17,7 @@ import tornado.websocket
 
 from turtle_letters.viewer import server
 from turtle_letters.viewer.picture import Painting
-from turtle_letters.viewer.trails import Trails, to_pixels
+from turtle_letters.viewer.trails import Trails
 
 PEN = (179, 184, 255)
 WEB = __file__.rsplit('/test/', 1)[0] + '/web'
@@ -33,7 +33,7 @@ def free_port():
 def room():
     """A server on a free port, in a thread of its own, showing a Trails."""
     trails = Trails()
-    view = types.SimpleNamespace(trails=trails, painting=Painting(trails), to_pixels=to_pixels,
+    view = types.SimpleNamespace(trails=trails, painting=Painting(trails),
                                  room=lambda: dict(drawings={}, scoreboard=''))
     port, started = free_port(), threading.Event()
     loops = []
