@@ -6,21 +6,29 @@
 
 Each student in roster order, N at a time, each in a sandbox with a ROS
 master of its own (session.py); the rubric scores what happened (rubric.py)
-and reports.py writes it out. Exit 0 once every student has a row, 2 on
-input that stops grading before anything runs.
+and reports.py writes it out. The grader's own failure on one submission
+is that student's row, never the class's. Exit 0 once every student has a
+row, 2 on input that stops grading before anything runs, 130 (Ctrl-C) or
+143 (SIGTERM) when stopped: every sandbox ended, the class files written
+for the students graded so far and marked incomplete.
 """
 import argparse
 import concurrent.futures
+import contextlib
 import json
 import os
 import queue
 import shutil
+import signal
 import sys
 import tempfile
+import threading
 import time
+import traceback
 
 import rospkg
 
+from ..grading.files import remove_tree, shown
 from ..grading.recognition import read
 from . import observations as seen
 from . import reports, rubric as rubrics, sandbox, session, submission
@@ -66,10 +74,15 @@ def default_rubric():
     return os.path.join(rospkg.RosPack().get_path('turtle_letters'), 'config', 'rubric.yaml')
 
 
+class Stopped(Exception):
+    """Grading was stopped (Ctrl-C, SIGTERM) before this student was done."""
+
+
 class Place:
     """Where submissions run: what they must not see, whether in a sandbox,
     and a core each for the `jobs` graded at once (alone: a core too, so
-    that a grade does not depend on who is graded beside it)."""
+    that a grade does not depend on who is graded beside it); the sandboxes
+    running, for `stop` to end them, and who is being graded."""
 
     def __init__(self, hidden, isolated, jobs):
         self.hidden, self.isolated = hidden, isolated
@@ -77,16 +90,45 @@ class Place:
         self.cores = queue.Queue()
         for i in range(jobs):
             self.cores.put(cores[i % len(cores)])
+        self.stopping, self.lock = threading.Event(), threading.Lock()
+        self.boxes, self.current = set(), []
+
+    @contextlib.contextmanager
+    def sandbox(self, work, cpu):
+        """A sandbox over `work`, ended by `stop` even while it runs."""
+        with sandbox.Sandbox(work, self.hidden, self.isolated, cpu) as box:
+            with self.lock:
+                self.boxes.add(box)
+            try:
+                if self.stopping.is_set():
+                    box.stop()
+                yield box
+            finally:
+                with self.lock:
+                    self.boxes.discard(box)
+
+    def stop(self):
+        """Every sandbox running ended now, and none started after."""
+        self.stopping.set()
+        with self.lock:
+            boxes = list(self.boxes)
+        for box in boxes:
+            box.stop()
 
 
 def facts_of(student, rubric, work, place, cpu):
-    """Run the student's submission and say what happened."""
+    """Run the student's submission and say what happened: (facts, run,
+    what of the submission was left out)."""
     if student.folder is None:
-        return rubrics.Facts(student.expected, 'no submission', *[None] * 6), []
+        return rubrics.Facts(student.expected, 'no submission', *[None] * 6), None, []
     package = submission.find(student.folder)
     if package.problem:
-        return rubrics.Facts(student.expected, package.problem, *[None] * 6), []
-    run = session.run(package, work, rubric.limits, place.hidden, place.isolated, cpu)
+        return rubrics.Facts(student.expected, package.problem, *[None] * 6), None, package.notes
+    session.prepare(package, work)
+    with place.sandbox(work, cpu) as box:
+        run = session.run(package, work, rubric.limits, box)
+    if box.stopped:
+        raise Stopped()
     drawing = reading = None
     if run.trigger is not None:
         drawing = seen.drawing(run.events, run.since, rubric.limits.settle, run.finished)
@@ -94,25 +136,49 @@ def facts_of(student, rubric, work, place, cpu):
     facts = rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
                           drawing, reading, run.stuck, run.limit, seen.own_triggers(run.events),
                           seen.chatter_peak(run.events))
-    return facts, run
+    return facts, run, package.notes
+
+
+def facts_or_failure(student, rubric, work, place, cpu):
+    """(facts, run, notes, the grader's own error or ''): a failure of the
+    grader on this submission becomes its facts, never the class's end."""
+    try:
+        return facts_of(student, rubric, work, place, cpu) + ('',)
+    except Stopped:
+        raise
+    except Exception as e:      # whatever the submission made the grader meet
+        if place.stopping.is_set():
+            raise Stopped() from None
+        problem = f'the grader failed on this submission: {type(e).__name__}: {e}'
+        return rubrics.Facts(student.expected, shown(problem), *[None] * 6), None, [], \
+            traceback.format_exc()
 
 
 def grade_student(student: Student, rubric, out, place, warning=''):
     """One student's row; their results.json and log.txt written (the picture: later)."""
+    if place.stopping.is_set():
+        raise Stopped()
     started = time.monotonic()
-    os.makedirs(reports.folder(out, student.id), exist_ok=True)
     work, cpu = tempfile.mkdtemp(prefix='turtle_letters_grade_'), place.cores.get()
+    with place.lock:
+        place.current.append(student.id)
     try:
-        facts, run = facts_of(student, rubric, work, place, cpu)
+        facts, run, notes, error = facts_or_failure(student, rubric, work, place, cpu)
     finally:
+        with place.lock:
+            place.current.remove(student.id)
         place.cores.put(cpu)
-        shutil.rmtree(work, ignore_errors=True)
+        remove_tree(work)
+    warning = '; '.join(filter(None, [warning] + notes))
     graded = rubrics.grade(facts, rubric)
     drawn = (facts.reading.letter or '') if facts.reading else ''
     board = leaderboard(facts, run)
     row = reports.Row(student.id, student.name, student.expected, drawn, graded,
                       time.monotonic() - started, board, None, warning)
     sections = run.log if run else [('submission', facts.problem)]
+    sections += [('left out of the submission', '\n'.join(notes))] if notes else []
+    sections += [("the grader's own error", error)] if error else []
+    os.makedirs(reports.folder(out, student.id), exist_ok=True)
     reports.write_log(out, student.id, sections)
     reports.write_results(os.path.join(reports.folder(out, student.id), 'results.json'), row)
     return row, facts
@@ -148,34 +214,117 @@ def draw_picture(out, row, facts):
     return row._replace(picture=os.path.relpath(path, out))
 
 
-def say(row, isolated):
+def said(row, isolated):
+    """The row's line on the terminal."""
     g = row.grade
-    print(('' if isolated else '[no sandbox: nothing isolated] ') +
-          f'{row.id} {row.name}: drew {row.drawn or "no letter"}, expected '
-          f'{row.expected or "?"}: {g.score:g}/{g.max_score:g} {g.verdict.upper()}: {g.reason}',
-          flush=True)
+    sid, name = row.csv()[:2]
+    return (('' if isolated else '[no sandbox: nothing isolated] ') +
+            f'{sid} {name}: drew {row.drawn or "no letter"}, expected {row.expected or "?"}: '
+            f'{reports.points(g)} {g.verdict.upper()}: {g.reason}')
+
+
+class Progress:
+    """On a terminal, a bar under the rows: students done, those being
+    graded, the time left (tqdm); elsewhere, the rows only."""
+
+    def __init__(self, total, place):
+        from tqdm import tqdm
+        self.place = place
+        self.bar = tqdm(total=total, unit='student', file=sys.stderr, dynamic_ncols=True,
+                        disable=not sys.stderr.isatty(), bar_format='{l_bar}{bar}| {n}/{total} '
+                        'students [{elapsed}<{remaining}]{postfix}')
+        self.ticker = threading.Thread(target=self._show_current, daemon=True)
+        self.ticker.start()
+
+    def _show_current(self):
+        while not self.bar.disable and not self.place.stopping.wait(1.0):
+            with self.place.lock:
+                current = ', '.join(shown(sid, 30) for sid in self.place.current)
+            self.bar.set_postfix_str(f'grading {current}' if current else '')
+
+    def row(self, line):
+        self.bar.write(line, file=sys.stdout)
+        sys.stdout.flush()
+        self.bar.update()
+
+    def close(self):
+        self.bar.close()
 
 
 def grade_all(students, rubric, out, hidden, args, warnings=None):
-    """Every student's row, in roster order, `args.jobs` at a time."""
+    """(every student's row in roster order, `args.jobs` at a time; the
+    signal's name if Ctrl-C or SIGTERM stopped it, with only the rows done)."""
     warnings = warnings or {}
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        place = Place(hidden, args.isolated, args.jobs)
-        futures = [pool.submit(grade_student, s, rubric, out, place, warnings.get(s.id, ''))
-                   for s in students]
-        rows = []
+    place = Place(hidden, args.isolated, args.jobs)
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs)
+    futures = [pool.submit(grade_student, s, rubric, out, place, warnings.get(s.id, ''))
+               for s in students]
+    progress, rows, stopped = Progress(len(students), place), {}, ''
+    try:
+        for i, future in enumerate(futures):
+            rows[i] = _finished(out, future.result(), progress, args.isolated)
+    except KeyboardInterrupt as e:
+        stopped = str(e) or 'SIGINT'
+        print(f'\ngrade_class.py: {stopped}: stopping (again to force)', file=sys.stderr,
+              flush=True)
+        _on_signal(_force(place))
+        place.stop()
         for future in futures:
-            row, facts = future.result()
-            row = draw_picture(out, row, facts)
-            say(row, args.isolated)
-            rows.append(row)
-    return rows
+            future.cancel()
+    finally:
+        place.stopping.set()
+        pool.shutdown(wait=True)
+    for i, future in enumerate(futures):    # done while it stopped: they count
+        if i not in rows and future.done() and not future.cancelled() and \
+                future.exception() is None:
+            rows[i] = _finished(out, future.result(), progress, args.isolated)
+    progress.close()
+    return [rows[i] for i in sorted(rows)], stopped
+
+
+def _finished(out, graded, progress, isolated):
+    row, facts = graded
+    try:
+        row = draw_picture(out, row, facts)
+    except Exception as e:      # no picture costs no row
+        row = row._replace(warning='; '.join(filter(None, [row.warning, f'no picture: {e}'])))
+    progress.row(said(row, isolated))
+    return row
+
+
+def _on_signal(handler):
+    signal.signal(signal.SIGINT, handler)
+    signal.signal(signal.SIGTERM, handler)
+
+
+def _interrupt(number, _):
+    raise KeyboardInterrupt(signal.Signals(number).name)
+
+
+def _force(place):
+    """A second Ctrl-C: end what runs at once and leave."""
+    def force(number, _):
+        print('grade_class.py: forced: no class files written', file=sys.stderr, flush=True)
+        place.stop()
+        os._exit(128 + number)
+    return force
 
 
 def write_class(out, rows, title):
     reports.write_csv(os.path.join(out, 'grades.csv'), rows)
     reports.write_junit(os.path.join(out, 'junit.xml'), rows)
     reports.write_html(os.path.join(out, 'report.html'), rows, title)
+
+
+def with_ungraded(rows, students, stopped):
+    """`rows`, and for each student grading stopped before, a row that says so."""
+    graded = {row.id for row in rows}
+    return rows + [reports.not_graded(s.id, s.name, s.expected, f'grading was stopped '
+                                      f'({stopped}) before this student was graded')
+                   for s in students if s.id not in graded]
+
+
+EXIT = {'': 0, 'SIGINT': 130, 'SIGTERM': 143}
 
 
 def grade_class(args, rubric):
@@ -187,15 +336,21 @@ def grade_class(args, rubric):
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
     for line in warnings:
-        print(f'warning: {line}', file=sys.stderr)
+        print(f'warning: {shown(line)}', file=sys.stderr)
     noted = {line.split(':', 1)[0]: line for line in warnings}
     hidden = [args.submissions, args.roster, out]
     started = time.monotonic()
-    rows = grade_all(students, rubric, out, hidden, args, noted)
-    write_class(out, rows, f'turtle_letters: {len(rows)} students graded')
+    rows, stopped = grade_all(students, rubric, out, hidden, args, noted)
+    title = f'turtle_letters: {len(rows)} students graded'
+    if stopped:
+        title = f'turtle_letters: INCOMPLETE, stopped by {stopped}: {len(rows)} of ' \
+                f'{len(students)} students graded'
+    write_class(out, with_ungraded(rows, students, stopped), title)
     print(f'{sum(r.grade.verdict == "pass" for r in rows)} of {len(rows)} passed in '
-          f'{(time.monotonic() - started) / 60:.1f} min; {out}/report.html', flush=True)
-    return 0
+          f'{(time.monotonic() - started) / 60:.1f} min; {out}/report.html' +
+          (f' (incomplete: {len(students) - len(rows)} not graded)' if stopped else ''),
+          flush=True)
+    return EXIT[stopped]
 
 
 def grade_one(args, rubric):
@@ -204,8 +359,12 @@ def grade_one(args, rubric):
     student = Student(os.path.basename(folder.rstrip('/')), args.name, expected, folder)
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
-    rows = grade_all([student], rubric, out, [out], args)
-    write_class(out, rows, f'turtle_letters: {student.id}')
+    rows, stopped = grade_all([student], rubric, out, [out], args)
+    if stopped:
+        write_class(out, with_ungraded(rows, [student], stopped),
+                    f'turtle_letters: {shown(student.id)}: INCOMPLETE, stopped by {stopped}')
+        return EXIT[stopped]
+    write_class(out, rows, f'turtle_letters: {shown(student.id)}')
     for test in rows[0].grade.tests:
         print(f'  {test.name}: {test.score:g}/{test.max_score:g}: {test.output}')
     return 0 if rows[0].grade.verdict == 'pass' else 1
@@ -224,7 +383,9 @@ def grade_gradescope(args, rubric):
     student = Student('submission', name, expected, os.path.join(root, 'submission'))
     out = tempfile.mkdtemp(prefix='turtle_letters_gradescope_')
     try:
-        rows = grade_all([student], rubric, out, [out], args)
+        rows, stopped = grade_all([student], rubric, out, [out], args)
+        if stopped:
+            return EXIT[stopped]
         os.makedirs(os.path.join(root, 'results'), exist_ok=True)
         reports.write_results(os.path.join(root, 'results', 'results.json'), rows[0])
     finally:
@@ -234,6 +395,7 @@ def grade_gradescope(args, rubric):
 
 def main(argv=None):
     args = arguments(sys.argv[1:] if argv is None else argv)
+    _on_signal(_interrupt)      # SIGTERM stops grading as Ctrl-C does
     problem = sandbox.problem() if args.isolated else None
     if problem:
         print(f'grade_class.py: {problem}; nothing was graded', file=sys.stderr)

@@ -10,6 +10,9 @@ from . import observations as seen
 
 ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
 LOG_TAIL = 20000        # bytes read of a node's log file, from its end
+LOGS_READ = 40          # log files read at most
+LOG_DEPTH = 2           # folders under ~/.ros/log looked in
+LOG_ENTRIES = 1000      # entries of a folder looked at
 
 
 def why_not_launched(output, events, work):
@@ -37,18 +40,35 @@ def last_error(*texts):
 
 def node_logs(work, node=''):
     """The text of the log files of every node (or of `node`) in the sandbox's
-    home, if that lies in the work folder (its folders could be links)."""
+    home, if that lies in the work folder (its folders could be links): at
+    most LOGS_READ files, LOG_DEPTH folders down (roslaunch writes log/RUN/NODE.log)."""
     texts, top = [], os.path.join(work, 'home', '.ros', 'log')
     if not os.path.realpath(top).startswith(os.path.realpath(work) + os.sep):
         return ''
-    for folder, _, files in os.walk(top):
-        for name in sorted(files):
-            path = os.path.join(folder, name)
-            if name.endswith('.log') and not os.path.islink(path) and os.path.isfile(path) \
-                    and not name.startswith(('master', 'roslaunch', 'rosout')) \
-                    and name.startswith(node):
-                texts.append(_tail(path))
+    for path in _log_files(top):
+        name = os.path.basename(path)
+        if not name.startswith(('master', 'roslaunch', 'rosout')) and name.startswith(node):
+            texts.append(_tail(path))
+            if len(texts) == LOGS_READ:
+                break
     return '\n'.join(texts)
+
+
+def _log_files(top):
+    """The .log files under `top`, no link followed, sorted, LOG_DEPTH folders down at most."""
+    found, folders = [], [(top, 0)]
+    while folders:
+        folder, depth = folders.pop()
+        try:
+            entries = sorted(os.scandir(folder), key=lambda e: e.name)[:LOG_ENTRIES]
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.is_dir(follow_symlinks=False) and depth < LOG_DEPTH:
+                folders.append((entry.path, depth + 1))
+            elif entry.name.endswith('.log') and entry.is_file(follow_symlinks=False):
+                found.append(entry.path)
+    return sorted(found)
 
 
 def _tail(path):

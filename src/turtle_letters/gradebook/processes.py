@@ -1,6 +1,8 @@
-"""The processes a run started, seen from outside its sandbox through
-/proc: the controller's, for the CPU it used while it drew."""
+"""The processes a run started, seen from outside its sandbox: what they
+print, kept within bounds, and through /proc the controller's CPU while it
+drew."""
 import os
+import threading
 import time
 
 from ..grading.procstat import cpu_seconds
@@ -55,3 +57,44 @@ class ControllerCpu:
         if not self.pids:
             return None
         return 100 * (self._used() - self.used) / max(time.monotonic() - self.started, 1e-6)
+
+
+class Capped:
+    """What a process prints, as it comes: its first HEAD and last TAIL
+    bytes kept, the rest only counted, so that nothing a submission prints
+    (a build that runs `yes`) can fill the grader's memory."""
+    HEAD, TAIL = 64 * 1024, 256 * 1024
+
+    def __init__(self):
+        self.head, self.tail, self.size = bytearray(), bytearray(), 0
+        self.lock = threading.Lock()
+
+    def add(self, data):
+        with self.lock:
+            self.size += len(data)
+            room = max(0, self.HEAD - len(self.head))
+            self.head += data[:room]
+            self.tail += data[room:]
+            if len(self.tail) > 2 * self.TAIL:
+                del self.tail[:-self.TAIL]
+
+    def read_all(self, stream, chunk=65536):
+        """Adds what `stream` (a file descriptor) gives until it ends."""
+        while True:
+            try:
+                data = os.read(stream, chunk)
+            except OSError:
+                return
+            if not data:
+                return
+            self.add(data)
+
+    def text(self, since=0):
+        """What was printed from byte `since` on, what was left out said in a line."""
+        with self.lock:
+            head, tail = bytes(self.head), bytes(self.tail[-self.TAIL:])
+            tail_from = self.size - len(tail)
+        gap = tail_from - max(since, len(head))
+        middle = f'\n... {gap} bytes left out ...\n'.encode() if gap > 0 else b''
+        kept = head[since:] + middle + tail[max(0, since - tail_from):]
+        return kept.decode('utf-8', 'replace')

@@ -10,11 +10,13 @@ import urllib.parse
 import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
 
-from ..grading.files import safe_name
+from ..grading.files import safe_name, shown
 from .rubric import Grade
 
+NOT_GRADED = 'not graded'
 CSV_COLUMNS = ['id', 'name', 'expected', 'drawn', 'score', 'max_score', 'verdict', 'reason']
 HEAD, TAIL = 15, 60          # lines kept of a step's output at its start and its end
+LOG_LINE = 1000              # characters kept of one line of log.txt
 TERMINAL_CODES = re.compile(r'\x1b\[[0-9;?]*[A-Za-z]|\x1b\][^\x07]*\x07|\r')
 
 
@@ -30,9 +32,21 @@ class Row(NamedTuple):
     warning: str = ''
 
     def csv(self):
+        """Its cells, each a line safe to show (an id from a folder's name is the user's text)."""
         g = self.grade
-        return [self.id, self.name, self.expected, self.drawn, f'{g.score:g}', f'{g.max_score:g}',
-                g.verdict, g.reason]
+        score = ['', ''] if g.score is None else [f'{g.score:g}', f'{g.max_score:g}']
+        return [shown(self.id), shown(self.name), self.expected, self.drawn, *score, g.verdict,
+                shown(g.reason)]
+
+
+def not_graded(sid, name, expected, why):
+    """The row of a student grading stopped before: no score, verdict 'not graded'."""
+    return Row(sid, name, expected, '', Grade([], None, None, NOT_GRADED, why), 0.0, [], None)
+
+
+def points(grade):
+    """'score/max', or '' for a student not graded."""
+    return '' if grade.score is None else f'{grade.score:g}/{grade.max_score:g}'
 
 
 def folder(out, student_id):
@@ -45,18 +59,19 @@ def plain(text):
 
 
 def trimmed(text):
-    """A step's output without terminal codes, its start and end kept."""
+    """A step's output without terminal codes, its start and end kept, each line safe to show."""
     lines = plain(text).splitlines()
-    if len(lines) <= HEAD + TAIL:
-        return lines
-    return lines[:HEAD] + [f'... {len(lines) - HEAD - TAIL} lines left out ...'] + lines[-TAIL:]
+    if len(lines) > HEAD + TAIL:
+        lines = lines[:HEAD] + [f'... {len(lines) - HEAD - TAIL} lines left out ...'] + \
+            lines[-TAIL:]
+    return [shown(line, LOG_LINE) for line in lines]
 
 
 def write_log(out, student_id, sections):
     path = os.path.join(folder(out, student_id), 'log.txt')
     with open(path, 'w') as f:
         for title, text in sections:
-            f.write(f'==== {title}\n' + '\n'.join(trimmed(text)) + '\n\n')
+            f.write(f'==== {shown(title)}\n' + '\n'.join(trimmed(text)) + '\n\n')
 
 
 def results_json(row: Row):
@@ -83,17 +98,21 @@ def write_csv(path, rows):
 
 
 def write_junit(path, rows):
-    failures = sum(row.grade.verdict != 'pass' for row in rows)
+    failures = sum(row.grade.verdict == 'fail' for row in rows)
+    skipped = sum(row.grade.verdict == NOT_GRADED for row in rows)
     suite = ElementTree.Element('testsuite', name='grade_class', tests=str(len(rows)),
-                                failures=str(failures))
+                                failures=str(failures), skipped=str(skipped))
     for row in rows:
+        sid, name = row.csv()[:2]
         case = ElementTree.SubElement(suite, 'testcase', classname='grade_class',
-                                      name=f'{row.id} {row.name}'.strip(),
+                                      name=f'{sid} {name}'.strip(),
                                       time=f'{row.seconds:.1f}')
         details = '\n'.join(f'{t.name}: {t.score:g}/{t.max_score:g}: {t.output}'
                             for t in row.grade.tests)
-        if row.grade.verdict != 'pass':
-            ElementTree.SubElement(case, 'failure', message=row.grade.reason).text = details
+        if row.grade.verdict == NOT_GRADED:
+            ElementTree.SubElement(case, 'skipped', message=shown(row.grade.reason))
+        elif row.grade.verdict != 'pass':
+            ElementTree.SubElement(case, 'failure', message=shown(row.grade.reason)).text = details
         ElementTree.SubElement(case, 'system-out').text = details
     ElementTree.ElementTree(suite).write(path, encoding='utf-8', xml_declaration=True)
 
@@ -105,8 +124,8 @@ def _cell(value):
 def write_html(path, rows, title):
     table = ''.join(
         f'<tr class="{row.grade.verdict}">' + ''.join(_cell(v) for v in row.csv()[:4]) +
-        _cell(f'{row.grade.score:g}/{row.grade.max_score:g}') + _cell(row.grade.verdict) +
-        f'<td><a href="#{html.escape(safe_name(row.id))}">{html.escape(row.grade.reason)}</a>'
+        _cell(points(row.grade)) + _cell(row.grade.verdict) +
+        f'<td><a href="#{html.escape(safe_name(row.id))}">{html.escape(row.csv()[-1])}</a>'
         f'</td></tr>\n' for row in rows)
     sections = ''.join(_section(row) for row in rows)
     with open(path, 'w') as f:
@@ -125,10 +144,10 @@ def _section(row):
                if row.picture else '<p>No drawing.</p>')
     board = ', '.join(f'{n}: {v:g}' if isinstance(v, (int, float)) else f'{n}: {v}'
                       for n, v, _ in row.leaderboard)
-    warning = f'<p class="lost">{html.escape(row.warning)}</p>' if row.warning else ''
-    return (f'<h2 id="{html.escape(safe_name(row.id))}">{html.escape(row.id)} '
-            f'{html.escape(row.name)}: {row.grade.score:g}/{row.grade.max_score:g}, '
-            f'{row.grade.verdict}</h2>\n{warning}<ul>{items}</ul>\n<p>{html.escape(board)}</p>'
+    warning = f'<p class="lost">{html.escape(shown(row.warning))}</p>' if row.warning else ''
+    sid, name = row.csv()[:2]
+    return (f'<h2 id="{html.escape(safe_name(row.id))}">{html.escape(sid)} '
+            f'{html.escape(name)}: {points(row.grade)}, {row.grade.verdict}</h2>\n{warning}<ul>{items}</ul>\n<p>{html.escape(board)}</p>'
             f'\n{picture}\n')
 
 

@@ -37,8 +37,8 @@ def read(roster_path, submissions) -> Tuple[List[Student], List[str]]:
     """The students in roster order, then folders the roster lacks; and warnings."""
     try:
         with open(roster_path, newline='', encoding='utf-8-sig') as f:
-            rows = list(csv.DictReader(f))
-            header = rows and list(rows[0].keys())
+            reader = csv.DictReader(f)
+            rows, header = list(reader), reader.fieldnames
     except (OSError, UnicodeDecodeError, csv.Error) as e:
         raise RosterError(f'{roster_path}: {e}') from None
     if not rows or not {'id', 'name'} <= set(header or []):
@@ -51,6 +51,11 @@ def read(roster_path, submissions) -> Tuple[List[Student], List[str]]:
         raise RosterError(f'{submissions}: {e}') from None
     students, seen, warnings = [], set(), []
     for number, row in enumerate(rows, start=2):
+        if None in row or None in row.values():     # DictReader's marks of a short or long row
+            given = sum(k is not None and v is not None for k, v in row.items()) + \
+                len(row.get(None) or [])
+            raise RosterError(f'{roster_path}, line {number}: {given} fields, where the header '
+                              f'has {len(header)} ({",".join(header)})')
         sid = (row['id'] or '').strip()
         if not sid or sid in seen:
             raise RosterError(f'{roster_path}, line {number}: '

@@ -5,6 +5,7 @@ from typing import Dict, List, NamedTuple, Optional
 
 import yaml
 
+from ..grading.files import shown
 from ..grading.recognition import Reading
 from .observations import Drawing
 
@@ -223,9 +224,9 @@ def grade(facts: Facts, rubric: Rubric) -> Grade:
     for name, points in rubric.points.items():
         title, judge = CRITERIA[name]
         share, line = judge(facts, rubric)
-        marks.append(Mark(title, round(share * points, 2), points, line))
+        marks.append(Mark(title, round(share * points, 2), points, shown(line)))
     missed = [m for name, m in zip(rubric.points, marks) if name in rubric.required and not m.met]
-    tests = ([Mark("It keeps within the sandbox's limits", 0.0, 0.0, facts.limit, True)]
+    tests = ([Mark("It keeps within the sandbox's limits", 0.0, 0.0, shown(facts.limit), True)]
              if facts.limit else []) + marks
     score = round(sum(t.score for t in tests), 2)
     total = sum(t.max_score for t in tests)

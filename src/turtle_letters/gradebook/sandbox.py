@@ -20,6 +20,8 @@ import subprocess
 import tempfile
 import time
 
+from ..grading.files import remove_tree
+
 MASTER_PORT = 11311
 USER = 65534            # nobody: the submission's processes run as this user
 GiB = 1024 ** 3
@@ -233,18 +235,25 @@ class Cgroup:
                 pids.update(int(pid) for pid in f.read().split())
         return pids
 
-    def remove(self):
-        """Kills every process in it, then removes it."""
+    def kill(self):
+        """Kills every process in it (those it forks meanwhile too)."""
         for _ in range(100):
-            left = self.processes()
+            try:
+                left = self.processes()
+            except OSError:         # removed meanwhile: nothing is left in it
+                return
             if not left:
-                break
+                return
             for pid in left:
                 try:
                     os.kill(pid, signal.SIGKILL)
                 except ProcessLookupError:
                     pass
             time.sleep(0.05)
+
+    def remove(self):
+        """Kills every process in it, then removes it."""
+        self.kill()
         for folder in sorted(set(self.folders.values())):
             for _ in range(100):
                 try:
@@ -278,6 +287,8 @@ class Sandbox:
         port = MASTER_PORT if isolated else _free_port()
         self.master_uri = f'http://127.0.0.1:{port}'
         self.cgroup = self.scratch = None
+        self.stopped = False    # grading was stopped (Ctrl-C): what runs in it is ended
+        self.sessions = []      # the process groups the grader started for it
 
     def __enter__(self):
         if not self.isolated:
@@ -289,23 +300,43 @@ class Sandbox:
             os.chmod(os.path.join(self.scratch, name), 0o1777)
         for command in (['ip', 'netns', 'add', self.namespace],
                         ['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up']):
-            subprocess.run(command, check=True, stderr=subprocess.PIPE, universal_newlines=True)
+            subprocess.run(command, check=True, stderr=subprocess.PIPE, universal_newlines=True,
+                           start_new_session=True)     # Ctrl-C is the grader's to act on
         try:
             self.cgroup = Cgroup(self.namespace, self.limits)
         except OSError:
             self.__exit__()
             raise
-        for folder, folders, files in os.walk(self.work):     # the work folder is USER's
-            for name in [folder] + [os.path.join(folder, n) for n in folders + files]:
-                os.lchown(name, USER, USER)
+        subprocess.run(['chown', '-R', '-h', f'{USER}:{USER}', self.work], check=True,
+                       start_new_session=True)
         return self
 
     def __exit__(self, *_):
         if self.cgroup is not None:
             self.cgroup.remove()
         if self.isolated:
-            subprocess.run(['ip', 'netns', 'delete', self.namespace], check=False)
-            shutil.rmtree(self.scratch, ignore_errors=True)
+            subprocess.run(['ip', 'netns', 'delete', self.namespace], check=False,
+                           start_new_session=True)
+            remove_tree(self.scratch)
+
+    def started(self, process):
+        """`process`, which the grader started for it in a session of its
+        own, to be ended by `stop` (at once, if it came too late)."""
+        self.sessions.append(process.pid)
+        if self.stopped:
+            self.stop()
+        return process
+
+    def stop(self):
+        """Ends everything it runs, for good (the grader was stopped)."""
+        self.stopped = True
+        for pid in self.sessions:
+            try:
+                os.killpg(pid, signal.SIGKILL)
+            except OSError:
+                pass
+        if self.cgroup is not None:
+            self.cgroup.kill()
 
     def reached(self):
         """The words of the first limit the submission reached, or ''."""

@@ -17,7 +17,7 @@ from typing import NamedTuple
 
 from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
-from .processes import ControllerCpu
+from .processes import Capped, ControllerCpu
 from .reports import plain
 from .rubric import Limits
 from .sandbox import Sandbox
@@ -26,6 +26,7 @@ from .submission import Package, copy
 WATCHER = '/grade_watch'
 POLL = 0.1                  # s between looks at what the watcher saw
 STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
+MAX_EVENTS = 100000         # events kept of a run (a lab's run has about 20,000)
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
                  'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
@@ -71,60 +72,56 @@ def prepare(package, work):
 
 
 def build(box, work, limits):
+    """catkin_make in the sandbox: its Step and what it printed (capped)."""
     command = ['bash', '-c', 'cd "$0/ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3',
                work]
-    started = time.monotonic()
-    try:
-        done = subprocess.run(box.inside(command, _env(work, box.master_uri)),
-                              stdout=subprocess.PIPE,
-                              stderr=subprocess.STDOUT, timeout=limits.build)
-    except subprocess.TimeoutExpired as e:
-        return Step(False, f'the build did not end within {limits.build:g} s'), _text(e.output)
-    output = _text(done.stdout)
-    if done.returncode != 0:
-        first = next((line.strip() for line in output.splitlines()
+    started, output = time.monotonic(), Capped()
+    process = box.started(subprocess.Popen(
+        box.inside(command, _env(work, box.master_uri)), stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True))
+    reader = threading.Thread(target=output.read_all, args=(process.stdout.fileno(),),
+                              daemon=True)
+    reader.start()
+    ended = wait_until(lambda: process.poll() is not None, limits.build, lambda: not box.stopped)
+    if not ended:
+        os.killpg(process.pid, signal.SIGKILL)
+    process.wait()
+    reader.join(timeout=5)
+    process.stdout.close()
+    text = output.text()
+    if not ended:
+        return Step(False, f'the build did not end within {limits.build:g} s'), text
+    if process.returncode != 0:
+        first = next((line.strip() for line in text.splitlines()
                       if 'error' in line.lower() and 'Error ' not in line), 'see log.txt')
-        return Step(False, f'catkin_make failed: {first}', time.monotonic() - started), output
+        return Step(False, f'catkin_make failed: {first}', time.monotonic() - started), text
     return Step(True, f'built in {time.monotonic() - started:.1f} s',
-                time.monotonic() - started), output
-
-
-def _text(data):
-    return (data or b'').decode('utf-8', 'replace')
+                time.monotonic() - started), text
 
 
 class Terminal:
     """roslaunch with a pseudo-terminal for its stdin and output, as in a
     terminal window; what it prints is kept."""
 
-    def __init__(self, argv, gentle):
-        self.gentle = gentle    # stopped with Ctrl-C first: nothing else ends its nodes
+    def __init__(self, argv, box):
+        self.box = box          # outside a sandbox, Ctrl-C first: nothing else ends its nodes
         self.master, slave = pty.openpty()
-        self.process = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave,
-                                        start_new_session=True)
+        self.process = box.started(subprocess.Popen(argv, stdin=slave, stdout=slave,
+                                                    stderr=slave, start_new_session=True))
         os.close(slave)
-        self.output = bytearray()
-        threading.Thread(target=self._read, daemon=True).start()
-
-    def _read(self):
-        while True:
-            try:
-                data = os.read(self.master, 4096)
-            except OSError:
-                return
-            if not data:
-                return
-            self.output += data
+        self.output = Capped()
+        threading.Thread(target=self.output.read_all, args=(self.master,), daemon=True).start()
 
     def type(self, keys):
         os.write(self.master, keys)
 
-    def text(self):
-        """What the terminal showed, as plain lines."""
-        return plain(bytes(self.output).decode('utf-8', 'replace'))
+    def text(self, since=0):
+        """What the terminal showed (from byte `since` on), as plain lines."""
+        return plain(self.output.text(since))
 
     def stop(self):
-        if self.gentle and self.process.poll() is None:
+        gentle = not (self.box.isolated or self.box.stopped)
+        if gentle and self.process.poll() is None:
             self.process.send_signal(signal.SIGINT)
             try:
                 self.process.wait(timeout=STOP_SECONDS)
@@ -147,18 +144,29 @@ class Watcher:
                    ROS_HOME=self.home, PYTHONUNBUFFERED='1')
         env.pop('ROS_LOG_DIR', None)
         self.errors = open(os.path.join(self.home, 'errors.txt'), 'w+')
-        self.process = subprocess.Popen(
+        # Its working folder is its own: `-m` imports from there first, as
+        # root, and the folder the grader was started in may hold a json.py.
+        self.process = box.started(subprocess.Popen(
             box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
-            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env)
-        self.events = []
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
+            cwd=self.home, start_new_session=True))
+        self.events, self.full = [], False
         threading.Thread(target=self._read, daemon=True).start()
 
     def _read(self):
         for line in self.process.stdout:
+            if len(self.events) >= MAX_EVENTS:
+                self.full = True
+                continue
             try:
                 self.events.append(json.loads(line))
             except ValueError:
                 continue
+
+    def overflowed(self):
+        """Why the grader stopped watching, or '' (a run's events are capped)."""
+        return (f'more than {MAX_EVENTS} messages for the grader to watch (poses, /chatter): '
+                f'it stopped watching' if self.full else '')
 
     def publish_p(self):
         self.process.stdin.write(b'P\n')
@@ -168,8 +176,8 @@ class Watcher:
         """Stops it; what it said on stderr, if anything (its own failure)."""
         self.process.kill()
         self.process.wait()
-        self.errors.seek(0)
-        said = self.errors.read()[-4000:]
+        self.errors.seek(max(0, self.errors.seek(0, os.SEEK_END) - 4000))
+        said = self.errors.read()
         self.errors.close()
         shutil.rmtree(self.home, ignore_errors=True)
         return said
@@ -185,16 +193,15 @@ def wait_until(condition, seconds, alive=lambda: True):
     return bool(condition())
 
 
-def run(package: Package, work, limits: Limits, hidden=(), isolated=True, cpu=None) -> Run:
-    """Build, launch, type P, watch: the whole run of one submission (on core `cpu`)."""
+def run(package: Package, work, limits: Limits, box: Sandbox) -> Run:
+    """Build, launch, type P, watch: the whole run of one submission, in
+    `box` (made over `work` after `prepare`)."""
     result = Run(package)
-    prepare(package, work)
-    with Sandbox(work, hidden, isolated, cpu) as box:
-        result.build, output = build(box, work, limits)
-        result.log.append(('catkin_make', output))
-        result.limit = box.reached()
-        if result.build.ok and not result.limit:
-            _launch_and_watch(box, work, limits, result)
+    result.build, output = build(box, work, limits)
+    result.log.append(('catkin_make', output))
+    result.limit = box.reached()
+    if result.build.ok and not result.limit and not box.stopped:
+        _launch_and_watch(box, work, limits, result)
     return result
 
 
@@ -202,21 +209,22 @@ def _launch_and_watch(box, work, limits, result):
     launch = os.path.basename(result.package.launch)
     command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && exec roslaunch "$1" "$2"',
                work, result.package.name, launch]
-    terminal = Terminal(box.inside(command, _env(work, box.master_uri)), not box.isolated)
+    terminal = Terminal(box.inside(command, _env(work, box.master_uri)), box)
     watcher = Watcher(box)
     try:
         _watch(terminal, watcher, limits, result,
-               lambda: terminal.process.poll() is None and not box.reached())
+               lambda: terminal.process.poll() is None and not box.reached()
+               and not box.stopped and not watcher.full)
     finally:
         result.finished = time.monotonic()
-        result.limit = box.reached()
+        result.limit = box.reached() or watcher.overflowed()
         terminal.stop()
         watcher_said = watcher.stop()
         result.events = list(watcher.events)
         result.log.append((f'roslaunch {result.package.name} {launch}', terminal.text()))
         if watcher_said.strip():
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
-    _explain(result, terminal.text(), work)
+    _explain(result, terminal, work)
 
 
 def _watch(terminal, watcher, limits, result, alive):
@@ -234,7 +242,7 @@ def _watch(terminal, watcher, limits, result, alive):
     result.waited = Step(not moved, 'the turtle moved before the trigger' if moved else
                          f'the turtle stood still for {limits.stand:g} s until the trigger')
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
-    shown = len(terminal.text())
+    shown = terminal.output.size
     terminal.type(b'P')
     time.sleep(0.2)
     terminal.type(b'\r')
@@ -255,10 +263,11 @@ def _watch(terminal, watcher, limits, result, alive):
     result.cpu_pct = cpu.share()
 
 
-def _explain(result, text, work):
+def _explain(result, terminal, work):
     """The failures' lines that read the submission's files (its nodes'
     logs): made only once none of its processes runs, so that none can
     swap a file for a link or a pipe while the grader reads it."""
+    text = terminal.text()
     if result.launch is not None and not result.launch.ok:
         result.launch = result.launch._replace(says=why_not_launched(text, result.events, work))
     if result.talker is not None and not result.talker.ok:
@@ -267,7 +276,7 @@ def _explain(result, text, work):
             result.talker = result.talker._replace(says=f'{result.talker.says}: {why}')
     if result.still_from is not None:
         graph = seen.last_graph(result.events)
-        result.stuck = why_still(text[result.still_from:], work,
+        result.stuck = why_still(terminal.text(result.still_from), work,
                                  graph['chatter_subscribers'] if graph else [])
 
 

@@ -4,6 +4,7 @@ files are read as plain XML, never run (a launch file's $(eval) is Python).
 """
 import os
 import shutil
+import stat
 import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
 
@@ -11,6 +12,9 @@ from ..grading.files import read_plain
 
 SKIPPED = {'.git', 'build', 'devel', 'install', 'logs', '__pycache__'}
 MAX_BYTES = 1 << 20      # a package.xml or launch file larger than this is not read
+MAX_DEPTH = 40           # folders within folders a submission may nest
+MAX_ENTRIES = 20000      # files and folders a submission may hold
+SIMULATOR = 'turtlesim'  # a package of this name is the grader's to run, not the submission's
 
 
 class Package(NamedTuple):
@@ -19,6 +23,33 @@ class Package(NamedTuple):
     launch: Optional[str]   # the launch file, relative to `folder`
     problem: str            # why it cannot be run, or ''
     others: List[str] = []  # the submission's other packages' folders, built beside it
+    notes: List[str] = []   # what of the submission was left out, and why
+
+
+def survey(top):
+    """(problem, special files) of the tree under `top`, walked without
+    recursion or following a link: a problem ('' if none) when it nests
+    deeper than MAX_DEPTH or holds more than MAX_ENTRIES (Python's own
+    walks fail past about 1,000 levels); its FIFOs, sockets and devices,
+    relative to `top`, which no copy may open."""
+    stack, count, special = [(top, 0)], 0, []
+    while stack:
+        folder, depth = stack.pop()
+        if depth > MAX_DEPTH:
+            return f'its folders nest more than {MAX_DEPTH} deep: not graded', special
+        try:
+            entries = list(os.scandir(folder))
+        except OSError as e:
+            return f'{os.path.relpath(folder, top)} cannot be read: {e.strerror}', special
+        count += len(entries)
+        if count > MAX_ENTRIES:
+            return f'it holds more than {MAX_ENTRIES} files and folders: not graded', special
+        for entry in entries:
+            if entry.is_dir(follow_symlinks=False):
+                stack.append((entry.path, depth + 1))
+            elif not (entry.is_symlink() or entry.is_file(follow_symlinks=False)):
+                special.append(os.path.relpath(entry.path, top))
+    return '', sorted(special)
 
 
 def package_folders(top):
@@ -81,18 +112,52 @@ def package_name(folder):
 def find(top) -> Package:
     """The submission's package: of the package.xml under `top`, the one
     whose launch file starts turtlesim and a controller, the shallowest
-    first; its other packages are built beside it."""
-    folders = package_folders(top)
-    if not folders:
-        return Package('', '', None, f'no package.xml in {top}')
-    folder = min(folders, key=lambda f: (lab_launch(f)[0], f.count(os.sep), f))
-    others = [f for f in folders if f != folder and package_name(f)]
-    name = package_name(folder)
+    first; its other packages are built beside it, but a second copy of a
+    package and a package named turtlesim, which are left out and noted."""
+    problem, special = survey(top)
+    if problem:
+        return Package('', '', None, problem)
+    notes = [f'left out {path}: not a plain file, folder or link (a FIFO, socket or device)'
+             for path in special]
+    named = [(f, package_name(f)) for f in package_folders(top)]
+    if not named:
+        return Package('', '', None, f'no package.xml in {top}', notes=notes)
+    ours = [(f, n) for f, n in named if n != SIMULATOR]
+    if not ours:
+        return Package('', named[0][0], None, f'its only package is named {SIMULATOR}, as the '
+                       f'simulator is: the grader runs {SIMULATOR} itself', notes=notes)
+    folder, name = min(ours, key=lambda fn: (lab_launch(fn[0])[0], fn[0].count(os.sep), fn[0]))
     if not name:
-        return Package('', folder, None, f'{os.path.join(folder, "package.xml")} names no package')
+        return Package('', folder, None, f'{os.path.join(folder, "package.xml")} names no package',
+                       notes=notes)
+    others, kept = [], {name: folder}
+    for other, other_name in named:
+        where = os.path.relpath(other, top)
+        if other == folder or not other_name:
+            continue
+        if other_name == SIMULATOR:
+            notes.append(f'left out {where}: its own {SIMULATOR} (the grader runs {SIMULATOR})')
+        elif other_name in kept:
+            notes.append(f'left out {where}: a second package named {other_name} (graded the '
+                         f'one in {os.path.relpath(kept[other_name], top)})')
+        else:
+            kept[other_name] = other
+            others.append(other)
     launch = lab_launch(folder)[1]
     problem = '' if launch else f'no launch file in {folder}'
-    return Package(name, folder, launch, problem, others)
+    return Package(name, folder, launch, problem, others, notes)
+
+
+def _left_out(folder, names):
+    """What copytree leaves out of `folder`: SKIPPED, and any file that is
+    not plain, a folder or a link (copying a FIFO would block on it)."""
+    def special(name):
+        try:
+            mode = os.lstat(os.path.join(folder, name)).st_mode
+        except OSError:
+            return True
+        return not (stat.S_ISDIR(mode) or stat.S_ISREG(mode) or stat.S_ISLNK(mode))
+    return {n for n in names if n in SKIPPED or special(n)}
 
 
 def copy(package: Package, workspace):
@@ -101,5 +166,5 @@ def copy(package: Package, workspace):
     targets = [package.name] + [f'other{i}' for i in range(1, len(package.others) + 1)]
     for folder, target in zip([package.folder] + package.others, targets):
         shutil.copytree(folder, os.path.join(workspace, 'src', target), symlinks=True,
-                        ignore=shutil.ignore_patterns(*SKIPPED))
+                        ignore=_left_out)
     return os.path.join(workspace, 'src', package.name)

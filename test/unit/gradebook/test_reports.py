@@ -48,3 +48,31 @@ def test_long_output_keeps_its_start_and_end_without_terminal_codes():
     assert lines[0] == 'ERROR' and lines[-1] == 'line 499'
     assert any('lines left out' in line for line in lines)
     assert len(lines) == reports.HEAD + reports.TAIL + 1
+
+
+def test_what_a_submission_names_or_prints_is_shown_plain_in_every_file(tmp_path):
+    """An id from a non-UTF-8 folder name (as a zip of "Müller" makes it) and
+    a reason with terminal codes and a form feed: every file still parses,
+    with neither in it; a student grading stopped before has a row that says so."""
+    odd = reports.Row('M\udcfcller', 'Ann\x1b[2J', 'A', '', FAILED._replace(
+        reason='It builds: \x1b]0;owned\x07\x0cboom'), 1.0, [], None, 'left out \x1b[31mx')
+    stopped = reports.not_graded('c3', 'Cy', 'C', 'grading was stopped (SIGINT)')
+    reports.write_csv(str(tmp_path / 'grades.csv'), [odd, stopped])
+    reports.write_junit(str(tmp_path / 'junit.xml'), [odd, stopped])
+    reports.write_html(str(tmp_path / 'report.html'), [odd, stopped], 'class')
+    for name in ('grades.csv', 'junit.xml', 'report.html'):
+        text = (tmp_path / name).read_text(encoding='utf-8')
+        assert not any(c in text for c in '\x1b\x07\x0c'), name
+    with open(tmp_path / 'grades.csv') as f:
+        rows = list(csv.reader(f))
+    assert rows[1][:2] == ['M\ufffdller', 'Ann [2J']
+    assert rows[2] == ['c3', 'Cy', 'C', '', '', '', 'not graded', 'grading was stopped (SIGINT)']
+    suite = ElementTree.parse(str(tmp_path / 'junit.xml')).getroot()
+    assert (suite.get('failures'), suite.get('skipped')) == ('1', '1')
+    assert suite.findall('testcase')[1].find('skipped') is not None
+    assert reports.folder(str(tmp_path), odd.id).endswith('/M%FCller')
+
+
+def test_each_line_of_a_log_is_shown_plain_and_capped():
+    lines = reports.trimmed('a\x07b\x00c\n' + 'y' * 5000)
+    assert lines == ['a b c', 'y' * (reports.LOG_LINE - 1) + '\u2026']

@@ -27,6 +27,8 @@ def test_roster_order_the_expected_letter_and_the_folders_it_lacks(tmp_path):
     ('id,name\n', 'header with id,name'),
     ('id,name\na,Ann\na,Bob\n', "id 'a' given twice"),
     ('id,name,letter\na,Ann,AB\n', "letter 'AB' is not one letter"),
+    ('id,name,letter\na,Ann,A\nb\n', r'line 3: 1 fields, where the header has 3 \(id,name,letter\)'),
+    ('id,name\na,Ann,A,x\n', 'line 2: 4 fields, where the header has 2'),
 ])
 def test_a_roster_that_cannot_be_used(tmp_path, text, says):
     roster, subs = setup_class(tmp_path, text, [])

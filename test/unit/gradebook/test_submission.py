@@ -1,6 +1,7 @@
 """Finding a cadet's package in their folder, and the launch file the lab runs."""
 import os
 
+from turtle_letters.gradebook import submission
 from turtle_letters.gradebook.submission import copy, find
 
 PACKAGE = '<package format="2"><name>{}</name></package>'
@@ -58,3 +59,56 @@ def test_of_several_packages_the_lab_and_the_others_beside_it(tmp_path):
     assert sorted(os.path.basename(f) for f in package.others) == ['a_msgs', 'b_tutorial']
     copy(package, str(tmp_path / 'ws'))
     assert sorted(os.listdir(tmp_path / 'ws' / 'src')) == ['my_lab', 'other1', 'other2']
+
+
+def nest(top, depth):
+    """`depth` folders one in another under `top` (made relative to each, as
+    a path that long is refused)."""
+    here = os.open(str(top), os.O_RDONLY)
+    for _ in range(depth):
+        os.mkdir('d', dir_fd=here)
+        deeper = os.open('d', os.O_RDONLY, dir_fd=here)
+        os.close(here)
+        here = deeper
+    os.close(here)
+
+
+def test_a_tree_too_deep_or_too_large_is_refused_in_words(tmp_path):
+    make(tmp_path, {'lab/package.xml': PACKAGE.format('lab'), 'lab/launch/x.launch': LAB})
+    nest(tmp_path / 'lab', 1100)        # deeper than Python's own walks can go
+    assert find(str(tmp_path)).problem == \
+        f'its folders nest more than {submission.MAX_DEPTH} deep: not graded'
+    wide = tmp_path / 'wide'
+    wide.mkdir()
+    for i in range(submission.MAX_ENTRIES + 1):
+        (wide / str(i)).touch()
+    assert 'more than 20000 files and folders' in find(str(wide)).problem
+
+
+def test_a_fifo_is_left_out_of_the_copy_and_said(tmp_path):
+    make(tmp_path, {'lab/package.xml': PACKAGE.format('lab'), 'lab/launch/x.launch': LAB})
+    os.mkfifo(str(tmp_path / 'lab' / 'pipe'))
+    package = find(str(tmp_path))
+    assert package.problem == '' and package.notes == [
+        'left out lab/pipe: not a plain file, folder or link (a FIFO, socket or device)']
+    target = copy(package, str(tmp_path / 'ws'))      # would block on the FIFO, were it opened
+    assert sorted(os.listdir(target)) == ['launch', 'package.xml']
+
+
+def test_a_second_copy_of_the_package_and_a_turtlesim_of_its_own_are_left_out(tmp_path):
+    make(tmp_path, {'src/lab/package.xml': PACKAGE.format('lab'), 'src/lab/launch/x.launch': LAB,
+                    'src/lab (copy)/package.xml': PACKAGE.format('lab'),
+                    'src/ros_tutorials/turtlesim/package.xml': PACKAGE.format('turtlesim'),
+                    'src/ros_tutorials/turtlesim/launch/sim.launch': LAB})
+    package = find(str(tmp_path))
+    assert (package.name, package.others, package.problem) == ('lab', [], '')
+    assert package.notes == [
+        'left out src/lab (copy): a second package named lab (graded the one in src/lab)',
+        'left out src/ros_tutorials/turtlesim: its own turtlesim (the grader runs turtlesim)']
+
+
+def test_a_package_named_turtlesim_alone_is_not_run(tmp_path):
+    make(tmp_path, {'turtlesim/package.xml': PACKAGE.format('turtlesim'),
+                    'turtlesim/launch/x.launch': LAB})
+    assert find(str(tmp_path)).problem == ('its only package is named turtlesim, as the '
+                                           'simulator is: the grader runs turtlesim itself')

@@ -28,3 +28,31 @@ def test_the_grader_saves_the_report_of_a_slash(tmp_path):
     stem = grader.Saver(str(tmp_path))(report, [[(1.0, 1.0), (2.0, 2.0)]], [(1.0, 1.0), (2.0, 2.0)])
     assert os.path.dirname(stem) == str(tmp_path)
     assert sorted(os.listdir(tmp_path)) == ['alice-%2F-1.json', 'alice-%2F-1.png']
+
+
+def test_text_shown_is_one_safe_line_of_bounded_length():
+    from turtle_letters.grading.files import LINE_MOST, shown
+    assert shown('a\nb\tc\x1b[2J\x0c\u202e\x7f') == 'a b c [2J   '
+    assert shown(b'M\xfcller') == shown('M\udcfcller') == 'M\ufffdller'
+    assert shown('\ud800x') == '\ufffd\ufffd\ufffdx'     # a lone surrogate, as JSON can give one
+    assert len(shown('x' * 10000)) == LINE_MOST and shown('ok') == 'ok'
+
+
+def test_a_file_name_keeps_a_folder_names_undecodable_bytes_distinct():
+    assert safe_name('M\udcfcller') == 'M%FCller' != safe_name('Müller') == 'M%C3%BCller'
+
+
+def test_a_tree_deeper_than_python_recurses_is_removed(tmp_path):
+    from turtle_letters.grading.files import remove_tree
+    top = os.open(str(tmp_path), os.O_RDONLY)
+    here = top
+    for _ in range(1200):       # made relative to a folder: a path this long is refused
+        os.mkdir('d', dir_fd=here)
+        deeper = os.open('d', os.O_RDONLY, dir_fd=here)
+        if here != top:
+            os.close(here)
+        here = deeper
+    os.close(here)
+    os.close(top)
+    remove_tree(str(tmp_path / 'd'))
+    assert os.listdir(str(tmp_path)) == []

@@ -1,0 +1,33 @@
+"""What a process prints, as the grader keeps it: its start and end, the
+middle counted, however much it prints."""
+import os
+
+from turtle_letters.gradebook.processes import Capped
+
+
+def test_the_start_and_end_are_kept_and_the_middle_counted():
+    kept = Capped()
+    kept.HEAD, kept.TAIL = 5, 5
+    for data in (b'abc', b'defgh', b'ijklmnopqrstuvwxyz'):
+        kept.add(data)
+    assert kept.size == 26
+    assert kept.text() == 'abcde\n... 16 bytes left out ...\nvwxyz'
+    assert kept.text(since=3) == 'de\n... 16 bytes left out ...\nvwxyz'
+    assert kept.text(since=24) == 'yz'
+
+
+def test_a_flood_through_a_pipe_stays_within_its_bounds():
+    kept, (read_end, write_end) = Capped(), os.pipe()
+    pid = os.fork()
+    if pid == 0:        # a child that prints 64 MiB, as a build that runs `yes` would
+        os.close(read_end)
+        for _ in range(1024):
+            os.write(write_end, b'y\n' * 32768)
+        os._exit(0)
+    os.close(write_end)
+    kept.read_all(read_end)
+    os.close(read_end)
+    os.waitpid(pid, 0)
+    assert kept.size == 64 * 1024 * 1024
+    assert len(kept.head) == Capped.HEAD and len(kept.tail) <= 2 * Capped.TAIL
+    assert f'{kept.size - Capped.HEAD - Capped.TAIL} bytes left out' in kept.text()
