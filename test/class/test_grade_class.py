@@ -37,6 +37,7 @@ CONCLUSIONS = {
     'c11_zoe': ('Z', '', 'fail', 'no submission'),
     'c12_ursula': ('U', 'U', 'fail', 'turtlesim was cleared'),
     'c13_victor': ('V', 'V', 'pass', 'drives the turtle and published "P"'),
+    'c14_lars': ('L', 'L', 'pass', 'every criterion met'),     # a pause of 3 s between strokes
     'x_late': ('', 'I', 'fail', 'no letter is expected'),
 }
 

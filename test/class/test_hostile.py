@@ -32,6 +32,7 @@ CONCLUSIONS = {
     'h6_flood': ('I', 'pass', '/chatter was flooded'),
 }
 LINGERING = ('sleep 987653', 'sleep 987654', 'sleep 987655')
+PLANTED = ('json', 'rosgraph')      # modules every process of the grader's imports
 
 
 @pytest.fixture(scope='module')
@@ -59,11 +60,20 @@ def room(tmp_path_factory):
     return room
 
 
+def planted(folder):
+    """A folder with a json.py and a rosgraph.py that leave a mark when imported,
+    as a folder an instructor grades from (`--one .`) may hold."""
+    folder.mkdir()
+    for module in PLANTED:
+        (folder / f'{module}.py').write_text("open(__file__ + '.ran', 'w').close()\n")
+    return str(folder)
+
+
 @pytest.fixture(scope='module')
 def graded(room):
     before = tree_hash(str(room['cls'])), tree_hash(str(room['home'])), sandbox_processes()
     alone = grade_class('--one', LENA, '--letter', 'L', '--rubric', RUBRIC,
-                        '--out', str(room['top'] / 'alone'))
+                        '--out', str(room['top'] / 'alone'), cwd=planted(room['top'] / 'cwd'))
     done = grade_class(str(room['cls']), '--roster', str(room['top'] / 'roster.csv'),
                        '--rubric', RUBRIC, '--out', str(room['out']), '--jobs', '2',
                        HOME=str(room['home']))
@@ -113,3 +123,9 @@ def test_nothing_around_the_class_changed_and_nothing_is_left(room, graded):
     lingering = [line for line in os.popen('ps -eo args').read().splitlines()
                  if line.startswith(LINGERING)]
     assert lingering == []
+
+
+def test_no_process_of_the_grader_imports_from_the_folder_it_was_started_in(room, graded):
+    _, alone, _, _ = graded
+    assert alone.returncode == 0, alone.stdout[-2000:]
+    assert sorted(os.listdir(room['top'] / 'cwd')) == sorted(f'{m}.py' for m in PLANTED)

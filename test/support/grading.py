@@ -6,6 +6,8 @@ import hashlib
 import os
 import subprocess
 import tempfile
+import threading
+import time
 
 from support.children import readable_env
 
@@ -27,10 +29,35 @@ def tree_hash(top):
     return digest.hexdigest()
 
 
-def grade_class(*args, timeout=900, **env):
+def grade_class(*args, timeout=900, cwd=None, **env):
     return subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', *args],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, cwd=cwd,
                           universal_newlines=True, env=readable_env(**env), timeout=timeout)
+
+
+def started_grading(*args):
+    """grade_class.py started as from a terminal: in a session of its own,
+    so that a test can send its process group Ctrl-C as the terminal would."""
+    return subprocess.Popen(['rosrun', 'turtle_letters', 'grade_class.py', *args],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            universal_newlines=True, env=readable_env(), start_new_session=True)
+
+
+def peak_memory_kb(process):
+    """Waits for `process` to end; the most memory it held (VmHWM, kB) and what it printed."""
+    printed, peak = [], 0
+    reader = threading.Thread(target=lambda: printed.extend(process.stdout), daemon=True)
+    reader.start()
+    while process.poll() is None:
+        try:
+            with open(f'/proc/{process.pid}/status') as f:
+                peak = max([peak] + [int(line.split()[1]) for line in f
+                                     if line.startswith('VmHWM:')])
+        except (OSError, ValueError):
+            pass
+        time.sleep(0.2)
+    reader.join(timeout=10)
+    return peak, ''.join(printed)
 
 
 def sandbox_processes():

@@ -17,6 +17,7 @@ STEP_SLACK = 0.01       # m a step may exceed what the commanded speed allows
 SLOW_TICKS = 1.5        # ticks' worth of travel allowed between two poses, beyond those that came
 JUMP = 0.001            # m between two poses that is a move, speed or no speed
 COUNTED = 0.1           # s: the watcher reports the commands it counted this often
+FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 
 
 class Drawing(NamedTuple):
@@ -123,8 +124,18 @@ def own_triggers(events):
 
 
 def chatter_peak(events):
-    """The most messages /chatter carried in one of the watcher's counts, per second."""
-    return max((e['count'] for e in events if e['kind'] == 'chatter_count'), default=0) / COUNTED
+    """The most messages a second /chatter carried over any FLOOD_WINDOW,
+    by the times the watcher counted them: each count covers `since` to `t`,
+    however late a busy machine let the watcher take it."""
+    counts = [e for e in events if e['kind'] == 'chatter_count']
+    peak, first = 0.0, 0
+    for i, count in enumerate(counts):
+        while counts[first]['t'] <= count['t'] - FLOOD_WINDOW:
+            first += 1
+        window = counts[first:i + 1]
+        covered = count['t'] - window[0].get('since', window[0]['t'] - COUNTED)
+        peak = max(peak, sum(c['count'] for c in window) / max(covered, FLOOD_WINDOW))
+    return peak
 
 
 def wiped(events, started, ended):

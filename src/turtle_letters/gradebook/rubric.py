@@ -25,7 +25,7 @@ class Limits(NamedTuple):
     talker: float = 5.0     # for "P" on /chatter after the key
     start: float = 15.0     # for the turtle's first move after the trigger
     drawing: float = 180.0
-    settle: float = 2.0     # standing still this long ends the drawing
+    settle: float = 5.0     # standing still this long ends the drawing
 
 
 class Rubric(NamedTuple):

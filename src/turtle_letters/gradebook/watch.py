@@ -89,7 +89,7 @@ def main():
     rospy.Subscriber('/rosout', Log, on_log, queue_size=100)
     chatter = rospy.Publisher('/chatter', String, queue_size=1, latch=True)
     threading.Thread(target=_obey, args=(chatter, report), daemon=True).start()
-    next_graph = 0.0
+    next_graph, counted_at = 0.0, time.monotonic()
     while not rospy.is_shutdown():
         if time.monotonic() >= next_graph:
             try:
@@ -100,9 +100,10 @@ def main():
         counted = commands.take()
         if counted:
             report('cmd_vel', count=counted)
-        heard = chatter_heard.take()
-        if heard:
-            report('chatter_count', count=heard)
+        now, heard = time.monotonic(), chatter_heard.take()
+        if heard:       # counted since `since`: the rate comes from the times, not the period
+            report('chatter_count', count=heard, since=counted_at)
+        counted_at = now
         time.sleep(COUNT_PERIOD)
 
 

@@ -2,6 +2,7 @@
 import os
 
 from turtle_letters.gradebook import submission
+from turtle_letters.grading.files import remove_tree
 from turtle_letters.gradebook.submission import copy, find
 
 PACKAGE = '<package format="2"><name>{}</name></package>'
@@ -76,8 +77,11 @@ def nest(top, depth):
 def test_a_tree_too_deep_or_too_large_is_refused_in_words(tmp_path):
     make(tmp_path, {'lab/package.xml': PACKAGE.format('lab'), 'lab/launch/x.launch': LAB})
     nest(tmp_path / 'lab', 1100)        # deeper than Python's own walks can go
-    assert find(str(tmp_path)).problem == \
-        f'its folders nest more than {submission.MAX_DEPTH} deep: not graded'
+    try:
+        assert find(str(tmp_path)).problem == \
+            f'its folders nest more than {submission.MAX_DEPTH} deep: not graded'
+    finally:
+        remove_tree(str(tmp_path / 'lab' / 'd'))      # pytest's own clean-up recurses
     wide = tmp_path / 'wide'
     wide.mkdir()
     for i in range(submission.MAX_ENTRIES + 1):

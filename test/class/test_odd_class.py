@@ -1,0 +1,116 @@
+"""A class folder as a learning-management system's zip really makes one,
+graded in one run: a tree nested deeper than Python walks, a folder name
+that is not UTF-8, a FIFO, a package handed in twice, a package named
+turtlesim, and a hostile build that prints 1 GB and an error line full of
+terminal codes. Each costs its own row only, says why in words, and the
+grader's own memory stays bounded. Root only, as grading is."""
+import csv
+import os
+import shutil
+import subprocess
+import xml.etree.ElementTree as ElementTree
+
+import pytest
+
+from support.grading import leftovers, peak_memory_kb, sandbox_processes, started_grading
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+LENA = os.path.join(HERE, 'submissions', 'c03_lena')
+PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
+RUBRIC = os.path.join(HERE, 'rubric.yaml')
+MULLER = os.fsdecode(b'o2_M\xfcller')      # "Müller" as a Latin-1 zip names it
+GRADER_MEMORY_KB = 400 * 1024               # the whole grader, Qt and all, on 1 GB of output
+pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason='grading makes network namespaces: '
+                                                          'root only')
+# id as shown: (drawn, verdict, words in the reason)
+CONCLUSIONS = {
+    'o1_deep': ('', 'fail', 'its folders nest more than 40 deep: not graded'),
+    'o3_fifo': ('L', 'pass', 'every criterion met'),
+    'o4_twice': ('L', 'pass', 'every criterion met'),
+    'o5_turtlesim': ('', 'fail', 'its only package is named turtlesim, as the simulator is'),
+    'h7_printer': ('', 'fail', 'catkin_make failed: error:'),
+    'o2_M\ufffdller': ('L', 'fail', 'no letter is expected'),
+}
+
+
+def nest(top, depth):
+    """`depth` folders one in another under `top`, each made relative to the last."""
+    here = os.open(top, os.O_RDONLY)
+    for _ in range(depth):
+        os.mkdir('d', dir_fd=here)
+        deeper = os.open('d', os.O_RDONLY, dir_fd=here)
+        os.close(here)
+        here = deeper
+    os.close(here)
+
+
+@pytest.fixture(scope='module')
+def graded(tmp_path_factory):
+    top = tmp_path_factory.mktemp('odd')
+    cls, out = str(top / 'class'), str(top / 'out')
+    for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim'):
+        shutil.copytree(LENA, os.path.join(cls, name))
+    nest(os.path.join(cls, 'o1_deep', 'lab1'), 1100)
+    os.mkfifo(os.path.join(cls, 'o3_fifo', 'lab1', 'scripts', 'pipe'))
+    shutil.copytree(os.path.join(cls, 'o4_twice', 'lab1'), os.path.join(cls, 'o4_twice',
+                                                                         'lab1 (copy)'))
+    package_xml = os.path.join(cls, 'o5_turtlesim', 'lab1', 'package.xml')
+    with open(package_xml) as f:
+        text = f.read().replace('<name>lab1</name>', '<name>turtlesim</name>')
+    with open(package_xml, 'w') as f:
+        f.write(text)
+    shutil.copytree(PRINTER, os.path.join(cls, 'h7_printer'))
+    (top / 'roster.csv').write_text(
+        'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
+                                     if sid.startswith('o') and sid[1] != '2') +
+        'h7_printer,Hugo Stile,P\n')
+    before = sandbox_processes()
+    try:
+        yield (out,) + peak_memory_kb(started_grading(
+            cls, '--roster', str(top / 'roster.csv'), '--rubric', RUBRIC, '--out', out,
+            '--jobs', '2')) + (before,)
+    finally:    # too deep for pytest's own clean-up
+        subprocess.run(['rm', '-rf', os.path.join(cls, 'o1_deep')], check=True)
+
+
+def rows_of(out):
+    with open(os.path.join(out, 'grades.csv'), encoding='utf-8') as f:
+        return {row['id']: row for row in csv.DictReader(f)}
+
+
+def test_each_odd_submission_costs_its_own_row_and_says_why(graded):
+    out, _, printed, _ = graded
+    assert 'passed in' in printed, printed[-3000:]
+    rows = rows_of(out)
+    assert sorted(rows) == sorted(CONCLUSIONS), printed[-3000:]
+    for sid, (drawn, verdict, words) in CONCLUSIONS.items():
+        assert (rows[sid]['drawn'], rows[sid]['verdict']) == (drawn, verdict), rows[sid]
+        assert words in rows[sid]['reason'], rows[sid]
+
+
+def test_what_was_left_out_is_said_in_the_students_log(graded):
+    out = graded[0]
+    fifo = open(os.path.join(out, 'o3_fifo', 'log.txt')).read()
+    assert 'left out lab1/scripts/pipe: not a plain file, folder or link' in fifo
+    twice = open(os.path.join(out, 'o4_twice', 'log.txt')).read()
+    assert 'left out lab1 (copy): a second package named lab1 (graded the one in lab1)' in twice
+    assert os.path.exists(os.path.join(out, 'o2_M%FCller', 'results.json'))
+
+
+def test_what_the_printer_printed_reaches_no_file_raw_and_the_grader_stays_small(graded):
+    out, peak, _, _ = graded
+    reason = rows_of(out)['h7_printer']['reason']     # its error line, up to the form feed
+    assert reason == 'It builds: catkin_make failed: error:  [2J ]0;owned', reason
+    for name in ('grades.csv', 'junit.xml', 'report.html', 'h7_printer/results.json',
+                 'h7_printer/log.txt'):
+        with open(os.path.join(out, name), encoding='utf-8') as f:
+            text = f.read()
+        assert not any(c in text for c in '\x1b\x07\x0c'), name
+    ElementTree.parse(os.path.join(out, 'junit.xml'))
+    log = open(os.path.join(out, 'h7_printer', 'log.txt')).read()
+    assert 'bytes left out' in log
+    assert 0 < peak < GRADER_MEMORY_KB, f'the grader held {peak / 1024:.0f} MiB'
+
+
+def test_nothing_is_left(graded):
+    assert leftovers(graded[3]) == ([], [])

@@ -1,0 +1,95 @@
+"""An instructor stops a class's grading: Ctrl-C from the terminal (SIGINT
+to its process group), or SIGTERM to the grader alone. Grading stops at
+once, every sandbox is ended, the class files are written for the students
+graded so far and say who was not, and nothing is left. Root only."""
+import csv
+import os
+import shutil
+import signal
+import subprocess
+import time
+import xml.etree.ElementTree as ElementTree
+
+import pytest
+
+from support.grading import leftovers, sandbox_processes, started_grading
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+LENA = os.path.join(HERE, 'submissions', 'c03_lena')
+RUBRIC = os.path.join(HERE, 'rubric.yaml')
+STOPS_WITHIN = 30.0     # s from the signal to the grader's exit (it takes well under 1 s idle)
+pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason='grading makes network namespaces: '
+                                                          'root only')
+
+
+def a_class(top, size):
+    """`size` copies of Lena's L and their roster; the grading's arguments."""
+    for n in range(1, size + 1):
+        shutil.copytree(LENA, str(top / 'class' / f's{n}'))
+    (top / 'roster.csv').write_text('id,name,letter\n' + ''.join(
+        f's{n},Lena Ortiz,L\n' for n in range(1, size + 1)))
+    return [str(top / 'class'), '--roster', str(top / 'roster.csv'), '--rubric', RUBRIC,
+            '--out', str(top / 'out'), '--jobs', '2']
+
+
+def sandbox_running():
+    listed = subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
+                            universal_newlines=True).stdout
+    return 'tlgrade' in listed
+
+
+def stop(grading, how):
+    """Sends `how`; (the grader's exit code, s it took to exit, what it printed)."""
+    how()
+    sent = time.monotonic()
+    try:
+        printed, _ = grading.communicate(timeout=120)
+    finally:
+        if grading.poll() is None:
+            os.killpg(grading.pid, signal.SIGKILL)
+    return grading.returncode, time.monotonic() - sent, printed
+
+
+def rows_of(out):
+    with open(out / 'grades.csv') as f:
+        return [(row['id'], row['verdict']) for row in csv.DictReader(f)]
+
+
+def test_ctrl_c_keeps_the_students_graded_and_leaves_nothing(tmp_path):
+    before = sandbox_processes()
+    grading = started_grading(*a_class(tmp_path, 4))
+    first = ''
+    while 'PASS' not in first and grading.poll() is None:     # one student is done
+        first = grading.stdout.readline()
+    deadline = time.monotonic() + 60
+    while not sandbox_running() and time.monotonic() < deadline:     # the next one runs
+        time.sleep(0.2)
+    code, took, printed = stop(grading, lambda: os.killpg(grading.pid, signal.SIGINT))
+    assert code == 130, first + printed
+    assert took < STOPS_WITHIN, took
+    rows = rows_of(tmp_path / 'out')
+    assert [sid for sid, _ in rows] == ['s1', 's2', 's3', 's4']
+    graded = [sid for sid, verdict in rows if verdict == 'pass']
+    assert 's1' in graded and len(graded) < 4, rows
+    assert all(verdict in ('pass', 'not graded') for _, verdict in rows), rows
+    for sid, verdict in rows:       # no made-up failure for the ones it stopped
+        assert os.path.exists(tmp_path / 'out' / sid / 'results.json') == (verdict == 'pass')
+    suite = ElementTree.parse(str(tmp_path / 'out' / 'junit.xml')).getroot()
+    assert suite.get('skipped') == str(4 - len(graded)) and suite.get('failures') == '0'
+    assert 'INCOMPLETE, stopped by SIGINT' in (tmp_path / 'out' / 'report.html').read_text()
+    assert 'incomplete' in printed
+    assert leftovers(before) == ([], [])
+
+
+def test_sigterm_to_the_grader_alone_does_the_same(tmp_path):
+    before = sandbox_processes()
+    grading = started_grading(*a_class(tmp_path, 2))
+    deadline = time.monotonic() + 60
+    while not sandbox_running() and time.monotonic() < deadline:
+        time.sleep(0.2)
+    time.sleep(2)       # into the build
+    code, took, printed = stop(grading, lambda: os.kill(grading.pid, signal.SIGTERM))
+    assert (code, rows_of(tmp_path / 'out')) == \
+        (143, [('s1', 'not graded'), ('s2', 'not graded')]), printed
+    assert took < STOPS_WITHIN, took
+    assert leftovers(before) == ([], [])
