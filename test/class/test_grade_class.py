@@ -124,6 +124,31 @@ def test_the_sandbox_is_as_its_rules_say(tmp_path):
     assert (work / 'mine').exists() and leftovers(before) == ([], [])
 
 
+def test_the_sandbox_shows_a_workspace_in_a_home_but_not_the_home(tmp_path, monkeypatch):
+    """An instructor's ~/catkin_ws on the ROS path: the sandbox shows that
+    workspace's folders, read-only, and nothing else of the home (a key in
+    ~/.ssh, another class's grades)."""
+    from turtle_letters.gradebook.sandbox import Sandbox
+    home = f'/home/turtle_letters_test_{os.getpid()}'
+    devel = os.path.join(home, 'catkin_ws', 'devel', 'lib', 'python3', 'dist-packages')
+    try:
+        os.makedirs(devel)
+        os.makedirs(os.path.join(home, '.ssh'))
+        for path in (os.path.join(devel, 'shown.py'), os.path.join(home, '.ssh', 'id_rsa')):
+            with open(path, 'w') as f:
+                f.write('seen\n')
+        monkeypatch.setenv('PYTHONPATH', f"{devel}:{os.environ.get('PYTHONPATH', '')}")
+        work = tmp_path / 'work'
+        work.mkdir()
+        with Sandbox(str(work)) as box:
+            seen = subprocess.run(box.inside(['bash', '-c', 'cat "$0/shown.py"; ls -A "$1"',
+                                              devel, home], {'PATH': '/usr/bin:/bin'}),
+                                  stdout=subprocess.PIPE, universal_newlines=True).stdout
+    finally:
+        shutil.rmtree(home, ignore_errors=True)
+    assert seen.split() == ['seen', 'catkin_ws'], seen
+
+
 def test_one_submission_exits_0_on_pass_and_1_on_fail(tmp_path):
     passed = grade_class('--one', os.path.join(SUBMISSIONS, 'x_late'), '--letter', 'I',
                          '--rubric', RUBRIC, '--out', str(tmp_path / 'a'))

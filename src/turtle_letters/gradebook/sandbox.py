@@ -63,17 +63,17 @@ ENVIRONMENT = ('CMAKE_PREFIX_PATH', 'ROS_PACKAGE_PATH', 'PYTHONPATH', 'LD_LIBRAR
 
 
 def underlays(environ):
-    """The folders under COVERED that the ROS environment needs (this
-    package's workspace, and the checkout its links point into), as the
-    top folders holding them: shown read-only in the sandbox."""
-    tops = set()
+    """What under COVERED the ROS environment needs, shown read-only in the
+    sandbox folder by folder, never the home or top folder holding it: each
+    entry of ENVIRONMENT (this package's workspace), and where the links
+    of its package path lead (the checkout's parts that build.sh links)."""
+    needed = set()
     for name in ENVIRONMENT:
         for entry in filter(None, environ.get(name, '').split(':')):
-            for path in {os.path.abspath(entry), os.path.realpath(entry)} | _link_targets(entry):
-                for covered in COVERED:
-                    if path.startswith(covered + '/'):
-                        tops.add(os.path.join(covered, path[len(covered) + 1:].split('/')[0]))
-    return sorted(t for t in tops if os.path.isdir(t))
+            needed |= {os.path.abspath(entry), os.path.realpath(entry)} | _link_targets(entry)
+    needed = {path for path in needed if _covered_parents(path) and os.path.exists(path)}
+    return sorted(path for path in needed
+                  if not any(path.startswith(other + '/') for other in needed))
 
 
 def _covered_parents(path):
@@ -86,11 +86,14 @@ def _covered_parents(path):
 
 
 def _link_targets(folder):
-    """Where the links in `folder`'s packages point (build.sh links this package's parts)."""
+    """Where the links in `folder` and in its packages point (build.sh
+    links this package's parts, and the bundled turtlesim whole)."""
     targets = set()
     for package in (os.listdir(folder) if os.path.isdir(folder) else []):
         inside = os.path.join(folder, package)
-        if os.path.isdir(inside) and not os.path.islink(inside):
+        if os.path.islink(inside):
+            targets.add(os.path.realpath(inside))
+        elif os.path.isdir(inside):
             targets.update(os.path.realpath(os.path.join(inside, part))
                            for part in os.listdir(inside)
                            if os.path.islink(os.path.join(inside, part)))
@@ -355,6 +358,7 @@ class Sandbox:
         rules = [option.format(scratch=self.scratch) for options, _ in RULES
                  for option in options]
         for path in underlays(os.environ):
+            rules += [option for parent in _covered_parents(path) for option in ('--dir', parent)]
             rules += ['--ro-bind', path, path]
         for path in self.hidden:
             rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]

@@ -1,6 +1,7 @@
 """What the sandbox shows of the ROS environment it covers: a workspace
 (and the checkout its links point into) under /tmp, /root or /home stays
-visible, read-only, since the sandbox covers those folders."""
+visible, read-only, folder by folder: never the home or top folder that
+holds it, since the sandbox covers those folders."""
 import os
 
 from turtle_letters.gradebook.sandbox import underlays
@@ -8,14 +9,21 @@ from turtle_letters.gradebook.sandbox import underlays
 
 def test_a_workspace_under_tmp_and_the_checkout_its_links_point_into(tmp_path):
     checkout, ws = tmp_path / 'checkout', tmp_path / 'ws'
-    (checkout / 'src').mkdir(parents=True)
-    (ws / 'src' / 'turtle_letters').mkdir(parents=True)
+    for folder in ('src', 'sim/turtlesim', 'secrets'):
+        (checkout / folder).mkdir(parents=True)
+    (checkout / 'package.xml').touch()
+    for folder in ('src/turtle_letters', 'devel/lib', 'build'):
+        (ws / folder).mkdir(parents=True)
     os.symlink(str(checkout / 'src'), str(ws / 'src' / 'turtle_letters' / 'src'))
-    top = '/' + str(tmp_path).strip('/').split('/')[0]
-    assert top in ('/tmp', '/root', '/home')        # pytest's tmp_path is under /tmp
+    os.symlink(str(checkout / 'package.xml'), str(ws / 'src' / 'turtle_letters' / 'package.xml'))
+    os.symlink(str(checkout / 'sim' / 'turtlesim'), str(ws / 'src' / 'turtlesim'))
+    assert str(tmp_path).startswith('/tmp/')        # pytest's tmp_path is under /tmp
     shown = underlays({'ROS_PACKAGE_PATH': f'{ws}/src:/usr/share',
-                       'CMAKE_PREFIX_PATH': '/opt/ros/noetic:/tmp/not-there'})
-    assert shown == [os.path.join(top, str(tmp_path)[len(top) + 1:].split('/')[0])]
+                       'CMAKE_PREFIX_PATH': f'{ws}/devel:/opt/ros/noetic:/tmp/not-there',
+                       'LD_LIBRARY_PATH': f'{ws}/devel/lib'})
+    assert shown == sorted(str(p) for p in (
+        checkout / 'package.xml', checkout / 'sim' / 'turtlesim', checkout / 'src',
+        ws / 'devel', ws / 'src'))
 
 
 def test_nothing_to_show_for_a_system_install():
