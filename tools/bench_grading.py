@@ -2,8 +2,9 @@
 
 - A class of copies of the test class's good submissions (test/class), as
   many students as asked (30 by default), graded with --jobs 2: minutes
-  per class, and each student's grading time beyond their drawing (build,
-  launch, the wait before the key, the settle).
+  per class, each student's grading time beyond their drawing (build,
+  launch, the wait before the key, the settle), and the most memory the
+  grader's own process held (VmHWM).
 - Fairness: the lab's own busy-loop controller (c01_nadia) graded alone
   three times, against its copies graded in that class: the same verdict
   and letter, and a worst deviation within the spread of the runs alone.
@@ -21,6 +22,7 @@ import shutil
 import statistics
 import subprocess
 import tempfile
+import threading
 import time
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
@@ -30,12 +32,35 @@ MODELS = [('c01_nadia', 'Nadia Novak'), ('c02_kofi', 'Kofi Mensah'), ('c03_lena'
 LAB = 'c01_nadia'
 CLASS_TARGET_MIN, OVERHEAD_TARGET_S = 15.0, 15.0    # for 30 students on 2 cores
 SANDBOX_TARGET_S = 2.0      # the most the sandbox may add to a student's grading
+GRADER_MEMORY_TARGET_MIB = 400  # the grader's own process, whatever a class prints (test_odd_class)
 
 
 def _grade(*args):
     return subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', *args],
                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           universal_newlines=True, env=dict(os.environ, PYTHONUNBUFFERED='1'))
+
+
+def _grade_watched(*args):
+    """grade_class.py run to its end: its exit code, and the most memory its
+    process held (VmHWM, MiB; rosrun execs it, so the pid is the grader's)."""
+    process = subprocess.Popen(['rosrun', 'turtle_letters', 'grade_class.py', *args],
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                               universal_newlines=True,
+                               env=dict(os.environ, PYTHONUNBUFFERED='1'))
+    printed, peak = [], 0
+    reader = threading.Thread(target=lambda: printed.extend(process.stdout), daemon=True)
+    reader.start()
+    while process.poll() is None:
+        try:
+            with open(f'/proc/{process.pid}/status') as f:
+                peak = max([peak] + [int(line.split()[1]) for line in f
+                                     if line.startswith('VmHWM:')])
+        except (OSError, ValueError):
+            pass
+        time.sleep(0.5)
+    reader.join(timeout=10)
+    return process.returncode, ''.join(printed), peak / 1024
 
 
 def _results(out, student):
@@ -66,11 +91,11 @@ def class_run(students, keep, jobs=2):
                                 os.path.join(subs, f's{i + 1:02}_{model}'), symlinks=True)
                 f.write(f's{i + 1:02}_{model},{name}\n')
         started = time.monotonic()
-        done = _grade(subs, '--roster', os.path.join(top, 'roster.csv'), '--out', out,
-                      '--jobs', str(jobs))
+        code, printed, memory = _grade_watched(subs, '--roster', os.path.join(top, 'roster.csv'),
+                                               '--out', out, '--jobs', str(jobs))
         minutes = (time.monotonic() - started) / 60
-        if done.returncode != 0:
-            raise RuntimeError(f'grade_class.py failed:\n{done.stdout[-3000:]}')
+        if code != 0:
+            raise RuntimeError(f'grade_class.py failed:\n{printed[-3000:]}')
         overheads, lab = [], []
         for i in range(students):
             student = f's{i + 1:02}_{MODELS[i % len(MODELS)][0]}'
@@ -84,7 +109,8 @@ def class_run(students, keep, jobs=2):
         worst = max(overheads)
         return dict(students=students, jobs=jobs, minutes=minutes,
                     overhead_median_s=statistics.median(o for o, _ in overheads),
-                    overhead_worst_s=worst[0], overhead_worst_student=worst[1], lab_in_class=lab)
+                    overhead_worst_s=worst[0], overhead_worst_student=worst[1], lab_in_class=lab,
+                    grader_mib=memory)
     finally:
         shutil.rmtree(top, ignore_errors=True)
 
@@ -148,12 +174,10 @@ def sandbox_cost(reps=3):
                 shutil.rmtree(out, ignore_errors=True)
     made = []
     for _ in range(reps):
-        work = tempfile.mkdtemp(prefix='bench_sandbox_work_')
         started = time.monotonic()
-        with Sandbox(work) as box:
+        with Sandbox() as box:
             subprocess.run(box.inside(['true'], {}), check=True)
         made.append(time.monotonic() - started)
-        shutil.rmtree(work, ignore_errors=True)
     return dict(times, made_s=statistics.median(made))
 
 
@@ -166,7 +190,8 @@ def grading_lines(results):
             f"{c['minutes']:.1f}{'!' if c['minutes'] > CLASS_TARGET_MIN * c['students'] / 30 else ''}"
             f" min; beyond each drawing median {c['overhead_median_s']:.1f} s, worst "
             f"{c['overhead_worst_s']:.1f}{'!' if c['overhead_worst_s'] > OVERHEAD_TARGET_S else ''} s "
-            f"({c['overhead_worst_student']})")
+            f"({c['overhead_worst_student']}); the grader's own memory at most "
+            f"{c['grader_mib']:.0f}{'!' if c['grader_mib'] > GRADER_MEMORY_TARGET_MIB else ''} MiB")
     alone = results.get('grade_alone')
     if alone and c:
         fits = [r['fit_pct'] for r in alone]
@@ -191,5 +216,5 @@ def grading_lines(results):
     lines.append(f'Grading targets: {CLASS_TARGET_MIN:g} min for 30 students on 2 cores; '
                  f'<= {OVERHEAD_TARGET_S:g} s per student beyond the drawing; the same verdict '
                  f'and letter alone and in a class, the deviation within the spread alone; the sandbox '
-                 f'adds <= {SANDBOX_TARGET_S:g} s.')
+                 f'adds <= {SANDBOX_TARGET_S:g} s; the grader holds <= {GRADER_MEMORY_TARGET_MIB} MiB.')
     return lines

@@ -22,9 +22,12 @@ echo "== unit tests: ${unit_dirs[*]}"
 (cd "$REPO" && QT_QPA_PLATFORM=offscreen "$ROS_PYTHON" -m pytest -q -p no:cacheprovider \
   --junitxml="$results/unit/pytest.xml" "${unit_dirs[@]}") || status=1
 
-echo "== integration tests (rostest)"
+rostests=$(ls "$REPO"/test/*.test | wc -l)
+[ -L "$WS/src/turtlesim" ] && rostests=$((rostests + $(ls "$REPO"/sim/turtlesim/test/*.test | wc -l)))
+echo "== integration tests (rostest): $rostests, each named as it starts"
 # run_tests always exits 0; catkin_test_results is the gate.
-catkin_make -C "$WS" "${CATKIN_ARGS[@]}" run_tests -j1 >"$WS/run_tests.log" 2>&1
+catkin_make -C "$WS" "${CATKIN_ARGS[@]}" run_tests -j1 2>&1 | tee "$WS/run_tests.log" |
+  "$ROS_PYTHON" "$REPO/tools/test_progress.py" "$rostests"
 grep -E "^(\[ROSTEST\]|\[Testcase|SUMMARY|  \* RESULT|  \* TESTS|  \* ERRORS|  \* FAILURES)" \
   "$WS/run_tests.log" || true
 catkin_test_results "$results" >"$WS/test_results.txt" 2>&1 || {
@@ -35,22 +38,22 @@ catkin_test_results "$results" >"$WS/test_results.txt" 2>&1 || {
 
 echo "== network tests: a classroom of machines made of network namespaces (root only)"
 mkdir -p "$results/network"
-(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -v -rs -p no:cacheprovider \
   --junitxml="$results/network/pytest.xml" test/network) || status=1
 
 echo "== class tests: a class of cadets' packages, and hostile ones, graded by grade_class.py (root only)"
 mkdir -p "$results/class"
-(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -rs -p no:cacheprovider \
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -v -rs -p no:cacheprovider \
   --junitxml="$results/class/pytest.xml" test/class) || status=1
 
 echo "== doc commands: every command of the README and doc/ pages, run as written"
 mkdir -p "$results/doc"
-(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -p no:cacheprovider \
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -v -p no:cacheprovider \
   --junitxml="$results/doc/pytest.xml" test/doc) || status=1
 
 echo "== workspace tests: underlay, switching simulators, doc/install.md's recipe, install space"
 mkdir -p "$results/workspace"
-(cd "$REPO" && "$ROS_PYTHON" -m pytest -q -p no:cacheprovider \
+(cd "$REPO" && "$ROS_PYTHON" -m pytest -v -p no:cacheprovider \
   --junitxml="$results/workspace/pytest.xml" test/workspace) || status=1
 
 "$ROS_PYTHON" "$REPO/tools/summarize_tests.py" "$results" || status=1

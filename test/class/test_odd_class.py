@@ -100,7 +100,7 @@ def test_what_was_left_out_is_said_in_the_students_log(graded):
 def test_what_the_printer_printed_reaches_no_file_raw_and_the_grader_stays_small(graded):
     out, peak, _, _ = graded
     reason = rows_of(out)['h7_printer']['reason']     # its error line, up to the form feed
-    assert reason == 'It builds: catkin_make failed: error:  [2J ]0;owned', reason
+    assert reason == 'It builds: catkin_make failed: error:  [2J ]0;owned ', reason  # BEL: ' '
     for name in ('grades.csv', 'junit.xml', 'report.html', 'h7_printer/results.json',
                  'h7_printer/log.txt'):
         with open(os.path.join(out, name), encoding='utf-8') as f:

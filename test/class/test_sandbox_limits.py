@@ -1,6 +1,8 @@
 """The sandbox's limits, each reached by a command of our own (never a
-cadet's) in a real sandbox: memory, processes and CPU time each stop it
-in words, and nothing of it is left after. Root only, as grading is."""
+cadet's) in a real sandbox: memory, processes, CPU time and disk each stop
+it in words, and nothing of it is left after; the core it is given, it
+cannot widen; two graded at once are different users. Root only, as
+grading is."""
 import os
 import subprocess
 
@@ -25,14 +27,36 @@ FORKS = ('import os, time\n'
     (['python3', '-c', FORKS], 'process limit of 256 reached'),
     (['bash', '-c', '(while :; do :; done) & (while :; do :; done) & sleep 3'],
      'CPU time limit of 1 s reached'),
+    (['bash', '-c', 'head -c 700M /dev/zero > /tmp/fill; head -c 700M /dev/zero > fill'],
+     'disk limit of 1 GiB reached (its files, /tmp and /dev/shm together)'),
 ])
-def test_each_limit_stops_the_sandbox_in_words(tmp_path, command, says):
+def test_each_limit_stops_the_sandbox_in_words(command, says):
     from turtle_letters.gradebook.sandbox import LIMITS, Sandbox
     limits = dict(LIMITS, cpu=(1, LIMITS['cpu'][1]))
     before = sandbox_processes()
-    with Sandbox(str(tmp_path), limits=limits) as box:
+    with Sandbox(limits=limits) as box:
         assert box.reached() == ''
         subprocess.run(box.inside(command, {'PATH': '/usr/bin:/bin'}), timeout=120,
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         assert box.reached().startswith(says)
+    assert leftovers(before) == ([], [])
+
+
+def test_the_core_given_holds_and_two_at_once_are_different_users():
+    """Given core 0, a command that widens its own affinity still runs on
+    core 0 alone (a cgroup's cpuset, not taskset); its work folder is its
+    user's alone, and the one graded beside it is another user."""
+    from turtle_letters.gradebook.sandbox import USER, Sandbox
+    probe = ('taskset -pc 0-63 $$ >/dev/null 2>&1; grep Cpus_allowed_list /proc/self/status; '
+             'id -u')
+    before = sandbox_processes()
+    with Sandbox(cpu=0, slot=0) as first, Sandbox(cpu=0, slot=1) as second:
+        seen = [subprocess.run(box.inside(['bash', '-c', probe], {'PATH': '/usr/bin:/bin'}),
+                               stdout=subprocess.PIPE, universal_newlines=True).stdout.split()
+                for box in (first, second)]
+        owners = [(os.stat(box.work).st_uid, oct(os.stat(box.work).st_mode & 0o777))
+                  for box in (first, second)]
+    assert seen == [['Cpus_allowed_list:', '0', str(USER)],
+                    ['Cpus_allowed_list:', '0', str(USER + 1)]]
+    assert owners == [(USER, '0o700'), (USER + 1, '0o700')]
     assert leftovers(before) == ([], [])

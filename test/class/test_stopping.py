@@ -93,3 +93,33 @@ def test_sigterm_to_the_grader_alone_does_the_same(tmp_path):
         (143, [('s1', 'not graded'), ('s2', 'not graded')]), printed
     assert took < STOPS_WITHIN, took
     assert leftovers(before) == ([], [])
+
+
+def test_in_a_terminal_a_bar_shows_the_class_going_and_ctrl_c_stops_it(tmp_path):
+    """As an instructor sees it in a real terminal (tmux): a bar with the
+    students done, the one being graded and the time left, each row above
+    it as it comes; Ctrl-C typed stops it, with the terminal left sane."""
+    from support.terminal import Terminal
+    before = sandbox_processes()
+    args = ' '.join(a_class(tmp_path, 3)).replace('--jobs 2', '--jobs 1')
+    terminal = Terminal(f'rosrun turtle_letters grade_class.py {args}; echo "exit $?" > code',
+                        cwd=True)
+    try:
+        assert terminal.wait_for('0/3 students', 60), terminal.screen()
+        assert terminal.wait_for('grading s1', 30), terminal.screen()
+        assert terminal.wait_for('1/3 students', 120), terminal.screen()
+        screen = terminal.screen()
+        assert 's1 Lena Ortiz: drew L, expected L: 100/100 PASS' in screen, screen
+        assert '<' in screen.split('1/3 students')[1].split('\n')[0]      # [elapsed<left]
+        terminal.send_keys('C-c')
+        assert terminal.wait_for('SIGINT: stopping', 30), terminal.screen()
+        deadline = time.monotonic() + STOPS_WITHIN
+        while not os.path.exists(os.path.join(terminal.dir, 'code')) and \
+                time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert terminal.read('code') == 'exit 130', terminal.screen()
+        assert {'icanon', 'echo'} <= set(terminal.flags())
+    finally:
+        terminal.close()
+    assert rows_of(tmp_path / 'out')[0] == ('s1', 'pass')
+    assert leftovers(before) == ([], [])

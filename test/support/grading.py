@@ -11,7 +11,7 @@ import time
 
 from support.children import readable_env
 
-SANDBOX_USER = 65534        # turtle_letters.gradebook.sandbox.USER
+SANDBOX_USERS = range(2000000000, 2000000000 + 256)   # turtle_letters.gradebook.sandbox.USER(S)
 CGROUPS = '/sys/fs/cgroup'
 
 
@@ -65,7 +65,7 @@ def sandbox_processes():
     found = {}
     for pid in filter(str.isdigit, os.listdir('/proc')):
         try:
-            if os.stat(f'/proc/{pid}').st_uid == SANDBOX_USER:
+            if os.stat(f'/proc/{pid}').st_uid in SANDBOX_USERS:
                 with open(f'/proc/{pid}/cmdline', 'rb') as f:
                     found[int(pid)] = f.read().replace(b'\0', b' ').decode().strip()
         except OSError:
@@ -75,8 +75,8 @@ def sandbox_processes():
 
 def leftovers(before=None):
     """What a grading left: processes from its work folders or of the
-    sandbox's user (but those in `before`); network namespaces, cgroups and
-    work or scratch folders."""
+    sandbox's users (but those in `before`); network namespaces, cgroups,
+    the sandboxes' tmpfs mounts, and work or scratch folders."""
     processes = subprocess.run(['pgrep', '-af', 'turtle_letters_grade_'], stdout=subprocess.PIPE,
                                universal_newlines=True).stdout.splitlines()
     processes += [f'{pid} {line}' for pid, line in sandbox_processes().items()
@@ -86,5 +86,7 @@ def leftovers(before=None):
     cgroups = glob.glob(f'{CGROUPS}/**/tlgrade*', recursive=True)
     folders = glob.glob(os.path.join(tempfile.gettempdir(), 'turtle_letters_grade_*')) + \
         glob.glob(os.path.join(tempfile.gettempdir(), 'turtle_letters_sandbox_*'))
+    with open('/proc/mounts') as f:
+        folders += [line.split()[1] for line in f if line.startswith('turtle_letters_sandbox ')]
     return processes, [n for n in namespaces.split() if n.startswith('tlgrade')] + cgroups + \
         folders

@@ -28,7 +28,7 @@ import traceback
 
 import rospkg
 
-from ..grading.files import remove_tree, shown
+from ..grading.files import shown
 from ..grading.recognition import read
 from . import observations as seen
 from . import reports, rubric as rubrics, sandbox, session, submission
@@ -80,32 +80,37 @@ class Stopped(Exception):
 
 class Place:
     """Where submissions run: what they must not see, whether in a sandbox,
-    and a core each for the `jobs` graded at once (alone: a core too, so
-    that a grade does not depend on who is graded beside it); the sandboxes
-    running, for `stop` to end them, and who is being graded."""
+    and a slot each for the `jobs` graded at once: a user of its own and a
+    core (alone: a core too, so that a grade does not depend on who is
+    graded beside it); the sandboxes running, for `stop` to end them, and
+    who is being graded."""
 
     def __init__(self, hidden, isolated, jobs):
         self.hidden, self.isolated = hidden, isolated
         cores = sorted(os.sched_getaffinity(0))
-        self.cores = queue.Queue()
-        for i in range(jobs):
-            self.cores.put(cores[i % len(cores)])
+        self.slots = queue.Queue()
+        for slot in range(jobs):
+            self.slots.put((slot, cores[slot % len(cores)]))
         self.stopping, self.lock = threading.Event(), threading.Lock()
         self.boxes, self.current = set(), []
 
     @contextlib.contextmanager
-    def sandbox(self, work, cpu):
-        """A sandbox over `work`, ended by `stop` even while it runs."""
-        with sandbox.Sandbox(work, self.hidden, self.isolated, cpu) as box:
-            with self.lock:
-                self.boxes.add(box)
-            try:
-                if self.stopping.is_set():
-                    box.stop()
-                yield box
-            finally:
+    def sandbox(self):
+        """A sandbox in a free slot, ended by `stop` even while it runs."""
+        slot, cpu = self.slots.get()
+        try:
+            with sandbox.Sandbox(self.hidden, self.isolated, cpu, slot=slot) as box:
                 with self.lock:
-                    self.boxes.discard(box)
+                    self.boxes.add(box)
+                try:
+                    if self.stopping.is_set():
+                        box.stop()
+                    yield box
+                finally:
+                    with self.lock:
+                        self.boxes.discard(box)
+        finally:
+            self.slots.put((slot, cpu))
 
     def stop(self):
         """Every sandbox running ended now, and none started after."""
@@ -116,7 +121,7 @@ class Place:
             box.stop()
 
 
-def facts_of(student, rubric, work, place, cpu):
+def facts_of(student, rubric, place):
     """Run the student's submission and say what happened: (facts, run,
     what of the submission was left out)."""
     if student.folder is None:
@@ -124,9 +129,8 @@ def facts_of(student, rubric, work, place, cpu):
     package = submission.find(student.folder)
     if package.problem:
         return rubrics.Facts(student.expected, package.problem, *[None] * 6), None, package.notes
-    session.prepare(package, work)
-    with place.sandbox(work, cpu) as box:
-        run = session.run(package, work, rubric.limits, box)
+    with place.sandbox() as box:
+        run = session.run(package, rubric.limits, box)
     if box.stopped:
         raise Stopped()
     drawing = reading = None
@@ -139,11 +143,11 @@ def facts_of(student, rubric, work, place, cpu):
     return facts, run, package.notes
 
 
-def facts_or_failure(student, rubric, work, place, cpu):
+def facts_or_failure(student, rubric, place):
     """(facts, run, notes, the grader's own error or ''): a failure of the
     grader on this submission becomes its facts, never the class's end."""
     try:
-        return facts_of(student, rubric, work, place, cpu) + ('',)
+        return facts_of(student, rubric, place) + ('',)
     except Stopped:
         raise
     except Exception as e:      # whatever the submission made the grader meet
@@ -159,16 +163,13 @@ def grade_student(student: Student, rubric, out, place, warning=''):
     if place.stopping.is_set():
         raise Stopped()
     started = time.monotonic()
-    work, cpu = tempfile.mkdtemp(prefix='turtle_letters_grade_'), place.cores.get()
     with place.lock:
         place.current.append(student.id)
     try:
-        facts, run, notes, error = facts_or_failure(student, rubric, work, place, cpu)
+        facts, run, notes, error = facts_or_failure(student, rubric, place)
     finally:
         with place.lock:
             place.current.remove(student.id)
-        place.cores.put(cpu)
-        remove_tree(work)
     warning = '; '.join(filter(None, [warning] + notes))
     graded = rubrics.grade(facts, rubric)
     drawn = (facts.reading.letter or '') if facts.reading else ''

@@ -1,8 +1,9 @@
 """Where a submission's code runs, and nothing of it outside: a network
 namespace of its own with loopback only (so its roscore is its own, on the
 usual port), and in it Debian's bubblewrap with the rules in RULES, run as
-an unprivileged user (AS_USER), in a cgroup of its own with LIMITS. The
-grader's watcher (watch.py) joins the namespace, not the sandbox.
+an unprivileged user of its own (as_user), in a cgroup of its own with
+LIMITS and the cores it was given. The grader's watcher (watch.py) joins
+the namespace, not the sandbox.
 
 `problem()` tries the sandbox out and says in one line what keeps it from
 being made here (no root for the namespace, no bubblewrap, no cgroup with
@@ -23,7 +24,9 @@ import time
 from ..grading.files import remove_tree
 
 MASTER_PORT = 11311
-USER = 65534            # nobody: the submission's processes run as this user
+USER = 2000000000       # the first of the users submissions run as, one each graded at once:
+USERS = 256             # ids no system gives out (below 65534, nobody; above, subuid ranges)
+CPU_PERIOD = 100000     # us: the scheduler's period, of which a submission has a core's worth
 GiB = 1024 ** 3
 # What the sandbox sees. The system is read-only; only the work folder
 # (the submission's copy, its build and its home, bound after these rules)
@@ -45,10 +48,15 @@ RULES = [
     (['--die-with-parent'], 'ends when the grader ends'),
     (['--new-session'], 'cannot type into the terminal the grader runs in'),
 ]
-# Who runs the command inside: an unprivileged user, with no capability
-# (bubblewrap run as root keeps them) and no way to gain one.
-AS_USER = ['setpriv', f'--reuid={USER}', f'--regid={USER}', '--clear-groups',
-           '--inh-caps=-all', '--bounding-set=-all', '--no-new-privs', '--']
+
+
+def as_user(user):
+    """Who runs the command inside: an unprivileged user, with no capability
+    (bubblewrap run as root keeps them) and no way to gain one."""
+    return ['setpriv', f'--reuid={user}', f'--regid={user}', '--clear-groups',
+            '--inh-caps=-all', '--bounding-set=-all', '--no-new-privs', '--']
+
+
 # What all of a submission's processes may use together, counted by a
 # cgroup of its own: memory (files in its /tmp included) and tasks are
 # capped by the kernel; CPU time is watched, and the run stopped at it.
@@ -57,6 +65,12 @@ LIMITS = {
     'processes': (256, lambda n: f'process limit of {n} reached (threads count)'),
     'cpu': (300, lambda n: f'CPU time limit of {n} s reached'),
 }
+# The writable space of each submission: a tmpfs of its own (its pages
+# count in its memory too), so one that fills it fails alone.
+DISK = (1 * GiB, lambda n: f'disk limit of {n / GiB:g} GiB reached (its files, /tmp and '
+                           f'/dev/shm together)')
+INODES = 200000         # files it may make there
+FULL = 1 << 20          # bytes free under which its space counts as full
 _NUMBERS = itertools.count(1)
 COVERED = ('/tmp', '/root', '/home', '/run')     # the folders RULES covers with empty ones
 ENVIRONMENT = ('CMAKE_PREFIX_PATH', 'ROS_PACKAGE_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH')
@@ -107,9 +121,8 @@ def problem():
     for tool, package in (('bwrap', 'bubblewrap'), ('ip', 'iproute2'), ('setpriv', 'util-linux')):
         if shutil.which(tool) is None:
             return f'{tool} is not installed (make deps installs {package})'
-    work = tempfile.mkdtemp(prefix='turtle_letters_sandbox_check_')
     try:
-        with Sandbox(work) as box:
+        with Sandbox(cpu=min(os.sched_getaffinity(0))) as box:
             tried = subprocess.run(box.inside(['true'], {}), stdout=subprocess.PIPE,
                                    stderr=subprocess.STDOUT, universal_newlines=True)
         if tried.returncode != 0:
@@ -119,10 +132,15 @@ def problem():
     except OSError as e:
         return f'no cgroup for the sandbox\'s limits can be made here: {e}'
     except subprocess.CalledProcessError as e:
-        return f'no network namespace can be made here: {e.stderr.strip() if e.stderr else e}'
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+        return f'no tmpfs or network namespace can be made here: ' \
+               f'{e.stderr.strip() if e.stderr else e}'
     return None
+
+
+def _run(command, check=True):
+    """A command of the grader's, in a session of its own (Ctrl-C is the grader's to act on)."""
+    subprocess.run(command, check=check, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                   universal_newlines=True, start_new_session=True)
 
 
 class CgroupError(OSError):
@@ -147,8 +165,8 @@ def _own_path(controller):
 
 def cgroup_parents():
     """('v2', {controller: folder}) or ('v1', ...): where a submission's
-    cgroups are made: at the top of cgroup v2, when it has memory and pids,
-    else in the grader's own cgroups of v1's memory, pids and cpuacct."""
+    cgroups are made: at the top of cgroup v2, when it has V2_CONTROLLERS,
+    else in the grader's own cgroups of V1_CONTROLLERS."""
     for where, kind, _ in _mounts():
         if kind == 'cgroup2':
             try:
@@ -156,20 +174,22 @@ def cgroup_parents():
                     enabled = f.read().split()
             except OSError:
                 continue
-            if {'memory', 'pids'} <= set(enabled):
-                return 'v2', {c: where for c in ('memory', 'pids', 'cpu')}
+            if set(V2_CONTROLLERS) <= set(enabled):
+                return 'v2', {c: where for c in V2_CONTROLLERS}
     found = {}
     for where, kind, options in _mounts():
-        for controller in set(options.split(',')) & {'memory', 'pids', 'cpuacct'}:
+        for controller in set(options.split(',')) & set(V1_CONTROLLERS):
             if kind == 'cgroup':
                 found[controller] = where + _own_path(controller).rstrip('/')
-    if len(found) < 3:
-        raise CgroupError('no cgroup with the memory, pids and cpuacct controllers here '
-                          '(neither cgroup v2 with memory and pids, nor v1 with all three)')
+    if len(found) < len(V1_CONTROLLERS):
+        raise CgroupError(f'no cgroup with the {", ".join(V1_CONTROLLERS)} controllers here '
+                          f'(neither cgroup v2 with {", ".join(V2_CONTROLLERS)}, nor v1 with all)')
     return 'v1', found
 
 
-# Where each version sets a limit and says how much was used or refused.
+# What each version needs, and where it sets a limit and says how much was used or refused.
+V2_CONTROLLERS = ('memory', 'pids', 'cpu', 'cpuset')
+V1_CONTROLLERS = ('memory', 'pids', 'cpuacct', 'cpu', 'cpuset')
 V2_FILES = dict(memory='memory.max', processes='pids.max', oom='memory.events',
                 refused='pids.events', cpu='cpu.stat')
 V1_FILES = dict(memory='memory.limit_in_bytes', processes='pids.max', oom='memory.oom_control',
@@ -178,10 +198,12 @@ V1_FILES = dict(memory='memory.limit_in_bytes', processes='pids.max', oom='memor
 
 class Cgroup:
     """A cgroup of its own for one submission: its memory and tasks capped
-    by the kernel, its CPU time counted, and every process in it killed at
-    the end (with the PID namespace, this catches what double-forked)."""
+    by the kernel, its cores (`cpus`: all of the grader's if None) a cpuset
+    it cannot widen, a core's worth of time on each, its CPU time counted,
+    and every process in it killed at the end (with the PID namespace, this
+    catches what double-forked)."""
 
-    def __init__(self, name, limits):
+    def __init__(self, name, limits, cpus=None):
         self.version, parents = cgroup_parents()
         self.limits = limits
         self.folders = {c: os.path.join(p, name) for c, p in parents.items()}
@@ -193,6 +215,26 @@ class Cgroup:
         if os.path.exists(os.path.join(self.folders['memory'], swap)):
             self._write('memory', swap, limits['memory'][0] if self.version == 'v1' else 0)
         self._write('pids', 'processes', limits['processes'][0])
+        self._share(cpus)
+
+    def _share(self, cpus):
+        """The cpuset of `cpus` and a core's worth of each per CPU_PERIOD."""
+        if self.version == 'v1':    # a v1 cpuset starts empty: no task may join it before
+            with open(os.path.join(os.path.dirname(self.folders['cpuset']),
+                                   'cpuset.effective_mems')) as f:
+                self._write('cpuset', 'cpuset.mems', f.read().strip())
+        if cpus is None:
+            if self.version == 'v1':
+                with open(os.path.join(os.path.dirname(self.folders['cpuset']),
+                                       'cpuset.effective_cpus')) as f:
+                    self._write('cpuset', 'cpuset.cpus', f.read().strip())
+            return
+        self._write('cpuset', 'cpuset.cpus', ','.join(map(str, cpus)))
+        if self.version == 'v2':
+            self._write('cpu', 'cpu.max', f'{CPU_PERIOD * len(cpus)} {CPU_PERIOD}')
+        else:
+            self._write('cpu', 'cpu.cfs_period_us', CPU_PERIOD)
+            self._write('cpu', 'cpu.cfs_quota_us', CPU_PERIOD * len(cpus))
 
     def _path(self, controller, entry):
         return os.path.join(self.folders[controller], self.files.get(entry, entry))
@@ -275,52 +317,60 @@ def _free_port():
 
 
 class Sandbox:
-    """A network namespace with loopback up, a cgroup with LIMITS, and
-    commands to run in them: `inside` for the submission's, in bubblewrap
-    as USER; `beside` for the grader's."""
+    """A network namespace with loopback up, a cgroup with LIMITS, a work
+    folder, and commands to run in them: `inside` for the submission's, in
+    bubblewrap as its own user; `beside` for the grader's. Its work folder,
+    /tmp and /dev/shm are on a tmpfs of DISK bytes of its own, gone with it:
+    no submission can fill the machine's disk.
 
-    def __init__(self, work, hidden=(), isolated=True, cpu=None, limits=None):
-        self.work, self.isolated = os.path.abspath(work), isolated
-        self.limits = limits or LIMITS
-        # One core of its own for the submission and its watcher, alone or
-        # beside others: a busy loop beside it cannot slow its simulator.
-        self.pinned = ['taskset', '-c', str(cpu)] if cpu is not None else []
+    slot: which of the students graded at once (its user is USER + slot);
+    cpu: the core it runs on (None: any of the grader's)."""
+
+    def __init__(self, hidden=(), isolated=True, cpu=None, limits=None, slot=0):
+        self.isolated, self.limits = isolated, limits or LIMITS
+        self.cpus = [cpu] if cpu is not None else None
+        self.user = USER + slot % USERS
         self.hidden = [os.path.abspath(h) for h in hidden if os.path.exists(h)]
         self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
         port = MASTER_PORT if isolated else _free_port()
         self.master_uri = f'http://127.0.0.1:{port}'
-        self.cgroup = self.scratch = None
+        self.cgroup = self.scratch = self.work = None
         self.stopped = False    # grading was stopped (Ctrl-C): what runs in it is ended
         self.sessions = []      # the process groups the grader started for it
 
     def __enter__(self):
-        if not self.isolated:
-            return self
         self.scratch = tempfile.mkdtemp(prefix='turtle_letters_sandbox_')
-        for name in ('tmp', 'shm'):
-            os.mkdir(os.path.join(self.scratch, name))
-            os.chown(os.path.join(self.scratch, name), USER, USER)
-            os.chmod(os.path.join(self.scratch, name), 0o1777)
-        for command in (['ip', 'netns', 'add', self.namespace],
-                        ['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up']):
-            subprocess.run(command, check=True, stderr=subprocess.PIPE, universal_newlines=True,
-                           start_new_session=True)     # Ctrl-C is the grader's to act on
+        self.work = os.path.join(self.scratch, 'work')
+        if not self.isolated:
+            os.mkdir(self.work)
+            return self
         try:
-            self.cgroup = Cgroup(self.namespace, self.limits)
-        except OSError:
+            _run(['mount', '-t', 'tmpfs', '-o', f'size={DISK[0]},nr_inodes={INODES},mode=0700',
+                  'turtle_letters_sandbox', self.scratch])
+            for name, mode in (('work', 0o700), ('tmp', 0o1777), ('shm', 0o1777)):
+                os.mkdir(os.path.join(self.scratch, name))
+                os.chown(os.path.join(self.scratch, name), self.user, self.user)
+                os.chmod(os.path.join(self.scratch, name), mode)
+            _run(['ip', 'netns', 'add', self.namespace])
+            _run(['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up'])
+            self.cgroup = Cgroup(self.namespace, self.limits, self.cpus)
+        except (OSError, subprocess.CalledProcessError):
             self.__exit__()
             raise
-        subprocess.run(['chown', '-R', '-h', f'{USER}:{USER}', self.work], check=True,
-                       start_new_session=True)
         return self
+
+    def hand_over(self):
+        """The work folder, as the grader filled it, made the submission's user's."""
+        if self.isolated:
+            _run(['chown', '-R', '-h', f'{self.user}:{self.user}', self.work])
 
     def __exit__(self, *_):
         if self.cgroup is not None:
             self.cgroup.remove()
         if self.isolated:
-            subprocess.run(['ip', 'netns', 'delete', self.namespace], check=False,
-                           start_new_session=True)
-            remove_tree(self.scratch)
+            _run(['ip', 'netns', 'delete', self.namespace], check=False)
+            _run(['umount', '--lazy', self.scratch], check=False)
+        remove_tree(self.scratch)
 
     def started(self, process):
         """`process`, which the grader started for it in a session of its
@@ -343,18 +393,28 @@ class Sandbox:
 
     def reached(self):
         """The words of the first limit the submission reached, or ''."""
-        return self.cgroup.reached() if self.cgroup is not None else ''
+        if self.cgroup is None:
+            return ''
+        space = os.statvfs(self.scratch)
+        if space.f_bavail * space.f_frsize < FULL or space.f_favail == 0:
+            return DISK[1](DISK[0])
+        return self.cgroup.reached()
+
+    def _pinned(self):
+        """Outside a sandbox, and for the grader's own watcher: the core given, by taskset
+        (the submission's processes are held to it by their cgroup's cpuset)."""
+        return ['taskset', '-c', str(self.cpus[0])] if self.cpus else []
 
     def beside(self, argv):
         if not self.isolated:
-            return self.pinned + list(argv)
-        return self.pinned + ['ip', 'netns', 'exec', self.namespace] + list(argv)
+            return self._pinned() + list(argv)
+        return self._pinned() + ['ip', 'netns', 'exec', self.namespace] + list(argv)
 
     def inside(self, argv, env):
         """`argv` in the sandbox, with only `env` set."""
         if not self.isolated:
-            return self.pinned + ['env', '-i'] + [f'{k}={v}' for k, v in sorted(env.items())] + \
-                list(argv)
+            return self._pinned() + ['env', '-i'] + \
+                [f'{k}={v}' for k, v in sorted(env.items())] + list(argv)
         rules = [option.format(scratch=self.scratch) for options, _ in RULES
                  for option in options]
         for path in underlays(os.environ):
@@ -367,5 +427,5 @@ class Sandbox:
         rules += ['--bind', self.work, self.work, '--chdir', self.work, '--clearenv']
         for name, value in sorted(env.items()):
             rules += ['--setenv', name, value]
-        return self.cgroup.joining() + self.beside(['bwrap'] + rules + ['--'] + AS_USER +
-                                                   list(argv))
+        return self.cgroup.joining() + ['ip', 'netns', 'exec', self.namespace, 'bwrap'] + \
+            rules + ['--'] + as_user(self.user) + list(argv)

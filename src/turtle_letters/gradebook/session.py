@@ -71,26 +71,30 @@ def prepare(package, work):
     os.symlink('/usr/bin/python3', os.path.join(work, 'bin', 'python'))
 
 
-def build(box, work, limits):
-    """catkin_make in the sandbox: its Step and what it printed (capped)."""
-    command = ['bash', '-c', 'cd "$0/ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3',
-               work]
+def build(box, limits):
+    """catkin_make in the sandbox, a job a core it was given: its Step and
+    what it printed (capped)."""
+    jobs = len(box.cpus or os.sched_getaffinity(0))
+    command = ['bash', '-c', 'cd "$0/ws" && catkin_make -j"$1" '
+                             '-DPYTHON_EXECUTABLE=/usr/bin/python3', box.work, str(jobs)]
     started, output = time.monotonic(), Capped()
     process = box.started(subprocess.Popen(
-        box.inside(command, _env(work, box.master_uri)), stdin=subprocess.DEVNULL,
+        box.inside(command, _env(box.work, box.master_uri)), stdin=subprocess.DEVNULL,
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True))
     reader = threading.Thread(target=output.read_all, args=(process.stdout.fileno(),),
                               daemon=True)
     reader.start()
-    ended = wait_until(lambda: process.poll() is not None, limits.build, lambda: not box.stopped)
+    ended = wait_until(lambda: process.poll() is not None, limits.build,
+                       lambda: not (box.stopped or box.reached()))
     if not ended:
         os.killpg(process.pid, signal.SIGKILL)
     process.wait()
     reader.join(timeout=5)
     process.stdout.close()
-    text = output.text()
+    text, limit = output.text(), box.reached()
     if not ended:
-        return Step(False, f'the build did not end within {limits.build:g} s'), text
+        return Step(False, f'the build was stopped: {limit}' if limit else
+                    f'the build did not end within {limits.build:g} s'), text
     if process.returncode != 0:
         first = next((line.strip() for line in text.splitlines()
                       if 'error' in line.lower() and 'Error ' not in line), 'see log.txt')
@@ -193,19 +197,21 @@ def wait_until(condition, seconds, alive=lambda: True):
     return bool(condition())
 
 
-def run(package: Package, work, limits: Limits, box: Sandbox) -> Run:
-    """Build, launch, type P, watch: the whole run of one submission, in
-    `box` (made over `work` after `prepare`)."""
+def run(package: Package, limits: Limits, box: Sandbox) -> Run:
+    """Copy, build, launch, type P, watch: the whole run of one submission, in `box`."""
     result = Run(package)
-    result.build, output = build(box, work, limits)
+    prepare(package, box.work)
+    box.hand_over()
+    result.build, output = build(box, limits)
     result.log.append(('catkin_make', output))
     result.limit = box.reached()
     if result.build.ok and not result.limit and not box.stopped:
-        _launch_and_watch(box, work, limits, result)
+        _launch_and_watch(box, limits, result)
     return result
 
 
-def _launch_and_watch(box, work, limits, result):
+def _launch_and_watch(box, limits, result):
+    work = box.work
     launch = os.path.basename(result.package.launch)
     command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && exec roslaunch "$1" "$2"',
                work, result.package.name, launch]
