@@ -6,6 +6,7 @@ Needs root (each submission gets a network namespace); skipped elsewhere."""
 import csv
 import json
 import os
+import pathlib
 import shutil
 import subprocess
 import xml.etree.ElementTree as ElementTree
@@ -167,26 +168,60 @@ def test_gradescope_mode_writes_its_results_where_gradescope_reads_them(tmp_path
     assert {'drawing time (s)', 'cmd_vel rate (/s)'} <= {b['name'] for b in results['leaderboard']}
 
 
+def container(writable):
+    """A bubblewrap container of the test's own, as Gradescope's is one: the
+    system read-only, no network but its loopback, `writable` writable (no
+    submission runs unsandboxed, even here)."""
+    from turtle_letters.gradebook.sandbox import underlays
+    box = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc', '--tmpfs', '/tmp']
+    for path in underlays(os.environ):      # a checkout in /tmp, as CI's may be
+        box += ['--ro-bind', path, path]
+    parents = []        # made 0755, so a cadet's user reaches what it is given (bwrap: 0700)
+    for parent in pathlib.Path(writable).parents:
+        if str(parent) in ('/tmp', '/'):
+            break
+        parents = ['--dir', str(parent)] + parents
+    return box + parents + ['--bind', str(writable), str(writable), '--unshare-net',
+                            '--unshare-pid', '--die-with-parent', '--']
+
+
 def test_no_sandbox_in_a_container_that_is_one_already(tmp_path):
-    """--no-sandbox as in Gradescope's container: here the container is a
-    bubblewrap sandbox of the test's own (the system read-only, no network
-    but its loopback), since no submission runs unsandboxed, even here."""
+    """--no-sandbox as in Gradescope's container."""
     out = tmp_path / 'out'
     out.mkdir()
-    from turtle_letters.gradebook.sandbox import underlays
-    container = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc',
-                 '--tmpfs', '/tmp']
-    for path in underlays(os.environ):      # a checkout in /tmp, as CI's may be
-        container += ['--ro-bind', path, path]
-    container += ['--bind', str(out), str(out), '--unshare-net', '--unshare-pid',
-                  '--die-with-parent', '--']
-    done = subprocess.run(container + ['rosrun', 'turtle_letters', 'grade_class.py', '--one',
-                                       os.path.join(SUBMISSIONS, 'x_late'), '--letter', 'I',
-                                       '--rubric', RUBRIC, '--out', str(out), '--no-sandbox'],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          universal_newlines=True, env=readable_env(), timeout=300)
+    done = subprocess.run(container(out) + [
+        'rosrun', 'turtle_letters', 'grade_class.py', '--one', os.path.join(SUBMISSIONS, 'x_late'),
+        '--letter', 'I', '--rubric', RUBRIC, '--out', str(out), '--no-sandbox'],
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True,
+        env=readable_env(), timeout=300)
     assert done.returncode == 0, done.stdout[-2000:]
     assert '[no sandbox: nothing isolated] x_late' in done.stdout
+
+
+def test_no_sandbox_still_runs_the_cadet_as_a_user_of_its_own_ended_before_the_grade(tmp_path):
+    """Gradescope's recipe (--gradescope --no-sandbox) on a hostile cadet
+    (hostile/h8_overwriter) whose double-forked process outlives its nodes
+    and writes over results.json once it appears: it runs as a user of its
+    own, which cannot, and it is ended before the grade is written."""
+    root = tmp_path / 'autograder'
+    shutil.copytree(os.path.join(HERE, 'hostile', 'h8_overwriter'), str(root / 'submission'))
+    (root / 'submission_metadata.json').write_text(json.dumps({'users': [{'name': 'Ida Wells'}]}))
+    beats, results = tmp_path / 'beats', root / 'results' / 'results.json'
+    beats.mkdir()
+    os.chmod(str(tmp_path), 0o711)      # the cadet's user may reach beats/, and write there only
+    os.chmod(str(beats), 0o1777)
+    (root / 'submission' / 'overwriter_lab' / 'targets.txt').write_text(
+        f'results {results}\nheartbeat {beats}/heartbeat\n')
+    done = subprocess.run(container(tmp_path) + [
+        'rosrun', 'turtle_letters', 'grade_class.py', '--gradescope', '--autograder', str(root),
+        '--rubric', RUBRIC, '--no-sandbox'], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+        universal_newlines=True, env=readable_env(), timeout=300)
+    assert done.returncode == 0, done.stdout[-2000:]
+    graded = json.loads(results.read_text())
+    assert graded['output'].startswith('PASS'), graded['output']
+    heartbeat = beats / 'heartbeat'
+    assert heartbeat.exists()       # it ran, and lingered past its nodes
+    assert heartbeat.stat().st_mtime < results.stat().st_mtime
 
 
 @pytest.mark.parametrize('args, says', [

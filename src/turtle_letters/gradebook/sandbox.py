@@ -137,6 +137,23 @@ def problem():
     return None
 
 
+def _kill_user(user):
+    """Kills every process of `user` (a submission's, outside a sandbox:
+    double forks and setsid included, as no process of it can change user)."""
+    for _ in range(100):
+        left = []
+        for pid in filter(str.isdigit, os.listdir('/proc')):
+            try:
+                if os.stat(f'/proc/{pid}').st_uid == user:
+                    os.kill(int(pid), signal.SIGKILL)
+                    left.append(pid)
+            except OSError:
+                continue
+        if not left:
+            return
+        time.sleep(0.05)
+
+
 def _run(command, check=True):
     """A command of the grader's, in a session of its own (Ctrl-C is the grader's to act on)."""
     subprocess.run(command, check=check, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
@@ -341,8 +358,9 @@ class Sandbox:
     def __enter__(self):
         self.scratch = tempfile.mkdtemp(prefix='turtle_letters_sandbox_')
         self.work = os.path.join(self.scratch, 'work')
-        if not self.isolated:
-            os.mkdir(self.work)
+        if not self.isolated:       # the user reaches its work folder, and no more of it
+            os.chmod(self.scratch, 0o711)
+            os.mkdir(self.work, 0o700)
             return self
         try:
             _run(['mount', '-t', 'tmpfs', '-o', f'size={DISK[0]},nr_inodes={INODES},mode=0700',
@@ -359,14 +377,21 @@ class Sandbox:
             raise
         return self
 
+    def runs_as_its_user(self):
+        """Whether its commands run as its user: always in a sandbox, and
+        outside one (--no-sandbox) wherever the grader is root."""
+        return self.isolated or os.geteuid() == 0
+
     def hand_over(self):
         """The work folder, as the grader filled it, made the submission's user's."""
-        if self.isolated:
+        if self.runs_as_its_user():
             _run(['chown', '-R', '-h', f'{self.user}:{self.user}', self.work])
 
     def __exit__(self, *_):
         if self.cgroup is not None:
             self.cgroup.remove()
+        if not self.isolated and self.runs_as_its_user():     # no PID namespace: by its user
+            _kill_user(self.user)
         if self.isolated:
             _run(['ip', 'netns', 'delete', self.namespace], check=False)
             _run(['umount', '--lazy', self.scratch], check=False)
@@ -390,6 +415,8 @@ class Sandbox:
                 pass
         if self.cgroup is not None:
             self.cgroup.kill()
+        if not self.isolated and self.runs_as_its_user():
+            _kill_user(self.user)
 
     def reached(self):
         """The words of the first limit the submission reached, or ''."""
@@ -414,7 +441,8 @@ class Sandbox:
         """`argv` in the sandbox, with only `env` set."""
         if not self.isolated:
             return self._pinned() + ['env', '-i'] + \
-                [f'{k}={v}' for k, v in sorted(env.items())] + list(argv)
+                [f'{k}={v}' for k, v in sorted(env.items())] + \
+                (as_user(self.user) if self.runs_as_its_user() else []) + list(argv)
         rules = [option.format(scratch=self.scratch) for options, _ in RULES
                  for option in options]
         for path in underlays(os.environ):

@@ -56,6 +56,7 @@ class Run:
 def _env(work, master_uri):
     env = {name: os.environ[name] for name in ROS_VARIABLES if name in os.environ}
     env.update(HOME=os.path.join(work, 'home'), ROS_HOME=os.path.join(work, 'home', '.ros'),
+               TMPDIR=os.path.join(work, 'tmp'),       # its own, with or without a sandbox
                PATH=f"{os.path.join(work, 'bin')}:/usr/bin:/bin:{os.environ.get('PATH', '')}",
                ROS_MASTER_URI=master_uri, ROS_IP='127.0.0.1', QT_QPA_PLATFORM='offscreen',
                LANG='C.UTF-8', TERM='xterm', PYTHONUNBUFFERED='1')
@@ -63,9 +64,10 @@ def _env(work, master_uri):
 
 
 def prepare(package, work):
-    """The work folder: the package's copy in a workspace, a home, and
-    `python` for scripts that say `#!/usr/bin/env python` (Noetic's is python3)."""
-    for folder in ('ws/src', 'home', 'bin'):
+    """The work folder: the package's copy in a workspace, a home, a folder
+    for temporary files, and `python` for scripts that say
+    `#!/usr/bin/env python` (Noetic's is python3)."""
+    for folder in ('ws/src', 'home', 'tmp', 'bin'):
         os.makedirs(os.path.join(work, folder), exist_ok=True)
     copy(package, os.path.join(work, 'ws'))
     os.symlink('/usr/bin/python3', os.path.join(work, 'bin', 'python'))
@@ -108,7 +110,7 @@ class Terminal:
     terminal window; what it prints is kept."""
 
     def __init__(self, argv, box):
-        self.box = box          # outside a sandbox, Ctrl-C first: nothing else ends its nodes
+        self.box = box          # where nothing else ends its nodes, Ctrl-C first
         self.master, slave = pty.openpty()
         self.process = box.started(subprocess.Popen(argv, stdin=slave, stdout=slave,
                                                     stderr=slave, start_new_session=True))
@@ -124,7 +126,7 @@ class Terminal:
         return plain(self.output.text(since))
 
     def stop(self):
-        gentle = not (self.box.isolated or self.box.stopped)
+        gentle = not (self.box.runs_as_its_user() or self.box.stopped)
         if gentle and self.process.poll() is None:
             self.process.send_signal(signal.SIGINT)
             try:

@@ -22,6 +22,7 @@ import signal
 import socket
 import struct
 import sys
+import tempfile
 import threading
 import time
 import warnings
@@ -359,10 +360,14 @@ def _choose_platform(argv):
 
 
 def _quiet_qt_runtime_dir():
-    """Give Qt the runtime folder it would pick anyway, so it does not warn."""
+    """Give Qt the runtime folder it would pick anyway (in TMPDIR, else /tmp),
+    so it does not warn; where none can be made, Qt only warns."""
     if not os.environ.get('XDG_RUNTIME_DIR'):
-        path = f'/tmp/runtime-{os.getuid()}'
-        os.makedirs(path, mode=0o700, exist_ok=True)
+        path = os.path.join(tempfile.gettempdir(), f'runtime-{os.getuid()}')
+        try:
+            os.makedirs(path, mode=0o700, exist_ok=True)
+        except OSError:
+            return
         os.environ['XDG_RUNTIME_DIR'] = path
 
 
