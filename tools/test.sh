@@ -27,7 +27,7 @@ rostests=$(ls "$REPO"/test/*.test | wc -l)
 echo "== integration tests (rostest): $rostests, each named as it starts"
 # run_tests always exits 0; catkin_test_results is the gate.
 catkin_make -C "$WS" "${CATKIN_ARGS[@]}" run_tests -j1 2>&1 | tee "$WS/run_tests.log" |
-  "$ROS_PYTHON" "$REPO/tools/test_progress.py" "$rostests"
+  "$ROS_PYTHON" "$REPO/tools/rostest_progress.py" "$rostests"
 grep -E "^(\[ROSTEST\]|\[Testcase|SUMMARY|  \* RESULT|  \* TESTS|  \* ERRORS|  \* FAILURES)" \
   "$WS/run_tests.log" || true
 catkin_test_results "$results" >"$WS/test_results.txt" 2>&1 || {

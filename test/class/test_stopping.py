@@ -123,3 +123,21 @@ def test_in_a_terminal_a_bar_shows_the_class_going_and_ctrl_c_stops_it(tmp_path)
         terminal.close()
     assert rows_of(tmp_path / 'out')[0] == ('s1', 'pass')
     assert leftovers(before) == ([], [])
+
+
+def test_a_second_ctrl_c_forces_it_out_and_still_leaves_nothing(tmp_path):
+    before = sandbox_processes()
+    grading = started_grading(*a_class(tmp_path, 2))
+    deadline = time.monotonic() + 60
+    while not sandbox_running() and time.monotonic() < deadline:
+        time.sleep(0.2)
+    time.sleep(2)
+
+    def twice():
+        os.killpg(grading.pid, signal.SIGINT)
+        time.sleep(0.02)
+        os.killpg(grading.pid, signal.SIGINT)
+    code, took, printed = stop(grading, twice)
+    assert code == 130 and took < STOPS_WITHIN, printed
+    assert 'forced' in printed and 'Traceback' not in printed, printed
+    assert leftovers(before) == ([], [])

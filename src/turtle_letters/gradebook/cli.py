@@ -261,6 +261,7 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     futures = [pool.submit(grade_student, s, rubric, out, place, warnings.get(s.id, ''))
                for s in students]
     progress, rows, stopped = Progress(len(students), place), {}, ''
+    _on_signal(_first_stop(place))
     try:
         for i, future in enumerate(futures):
             rows[i] = _finished(out, future.result(), progress, args.isolated)
@@ -268,7 +269,6 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
         stopped = str(e) or 'SIGINT'
         print(f'\ngrade_class.py: {stopped}: stopping (again to force)', file=sys.stderr,
               flush=True)
-        _on_signal(_force(place))
         place.stop()
         for future in futures:
             future.cancel()
@@ -302,11 +302,23 @@ def _interrupt(number, _):
     raise KeyboardInterrupt(signal.Signals(number).name)
 
 
+def _first_stop(place):
+    """Ctrl-C or SIGTERM while grading: the next one forces, from now on."""
+    def first(number, frame):
+        _on_signal(_force(place))
+        _interrupt(number, frame)
+    return first
+
+
 def _force(place):
-    """A second Ctrl-C: end what runs at once and leave."""
+    """A second Ctrl-C: end what runs and remove the sandboxes at once, and leave."""
     def force(number, _):
         print('grade_class.py: forced: no class files written', file=sys.stderr, flush=True)
         place.stop()
+        with place.lock:
+            boxes = list(place.boxes)
+        for box in boxes:
+            box.__exit__(None, None, None)
         os._exit(128 + number)
     return force
 

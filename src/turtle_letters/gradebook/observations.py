@@ -12,11 +12,13 @@ turtle: a controller that publishes its own draws without one.
 import math
 from typing import List, NamedTuple, Optional
 
-TICK = 0.016            # s: turtlesim advances each turtle by this step, once a tick
+from ..letters.layout import SIM_TICK as TICK
+
+WATCHER = '/grade_watch'    # the grader's watcher's node name (watch.py)
 STEP_SLACK = 0.01       # m a step may exceed what the commanded speed allows
 SLOW_TICKS = 1.5        # ticks' worth of travel allowed between two poses, beyond those that came
 JUMP = 0.001            # m between two poses that is a move, speed or no speed
-COUNTED = 0.1           # s: the watcher reports the commands it counted this often
+COUNTED = 0.1           # s: the watcher counts commands and /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 
 
@@ -111,7 +113,7 @@ def trigger(events, since, by_grader=False):
     driving = controllers(events)
     for e in events:
         if e['kind'] == 'chatter' and e['t'] >= since and e['data'].strip() == 'P' \
-                and (e['sender'] == '/grade_watch') == by_grader and e['sender'] not in driving:
+                and (e['sender'] == WATCHER) == by_grader and e['sender'] not in driving:
             return e['t']
     return None
 

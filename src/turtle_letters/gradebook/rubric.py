@@ -18,14 +18,15 @@ class RubricError(ValueError):
 
 
 class Limits(NamedTuple):
-    """Seconds each step may take before it fails."""
-    build: float = 300.0
-    launch: float = 60.0
-    stand: float = 3.0      # the turtle is watched this long before the key is typed
-    talker: float = 5.0     # for "P" on /chatter after the key
-    start: float = 15.0     # for the turtle's first move after the trigger
-    drawing: float = 180.0
-    settle: float = 5.0     # standing still this long ends the drawing
+    """Seconds each step may take before it fails: config/rubric.yaml says
+    how many, and what each is for."""
+    build: float
+    launch: float
+    stand: float
+    talker: float
+    start: float
+    drawing: float
+    settle: float
 
 
 class Rubric(NamedTuple):

@@ -363,12 +363,7 @@ class Sandbox:
             os.mkdir(self.work, 0o700)
             return self
         try:
-            _run(['mount', '-t', 'tmpfs', '-o', f'size={DISK[0]},nr_inodes={INODES},mode=0700',
-                  'turtle_letters_sandbox', self.scratch])
-            for name, mode in (('work', 0o700), ('tmp', 0o1777), ('shm', 0o1777)):
-                os.mkdir(os.path.join(self.scratch, name))
-                os.chown(os.path.join(self.scratch, name), self.user, self.user)
-                os.chmod(os.path.join(self.scratch, name), mode)
+            _writable_space(self.scratch, self.user)
             _run(['ip', 'netns', 'add', self.namespace])
             _run(['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up'])
             self.cgroup = Cgroup(self.namespace, self.limits, self.cpus)
@@ -443,17 +438,33 @@ class Sandbox:
             return self._pinned() + ['env', '-i'] + \
                 [f'{k}={v}' for k, v in sorted(env.items())] + \
                 (as_user(self.user) if self.runs_as_its_user() else []) + list(argv)
-        rules = [option.format(scratch=self.scratch) for options, _ in RULES
-                 for option in options]
-        for path in underlays(os.environ):
-            rules += [option for parent in _covered_parents(path) for option in ('--dir', parent)]
-            rules += ['--ro-bind', path, path]
-        for path in self.hidden:
-            rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]
-        for parent in _covered_parents(self.work):      # bubblewrap would make them 0700
-            rules += ['--dir', parent]
-        rules += ['--bind', self.work, self.work, '--chdir', self.work, '--clearenv']
+        rules = _rules(self.scratch, self.work, self.hidden) + ['--clearenv']
         for name, value in sorted(env.items()):
             rules += ['--setenv', name, value]
         return self.cgroup.joining() + ['ip', 'netns', 'exec', self.namespace, 'bwrap'] + \
             rules + ['--'] + as_user(self.user) + list(argv)
+
+
+def _writable_space(scratch, user):
+    """At `scratch`, a tmpfs of DISK bytes and INODES files holding the
+    submission's work folder, /tmp and /dev/shm, all `user`'s."""
+    _run(['mount', '-t', 'tmpfs', '-o', f'size={DISK[0]},nr_inodes={INODES},mode=0700',
+          'turtle_letters_sandbox', scratch])
+    for name, mode in (('work', 0o700), ('tmp', 0o1777), ('shm', 0o1777)):
+        os.mkdir(os.path.join(scratch, name))
+        os.chown(os.path.join(scratch, name), user, user)
+        os.chmod(os.path.join(scratch, name), mode)
+
+
+def _rules(scratch, work, hidden):
+    """bubblewrap's options: RULES, what the ROS environment needs under
+    the folders they cover, `hidden` covered, and `work`, writable."""
+    rules = [option.format(scratch=scratch) for options, _ in RULES for option in options]
+    for path in underlays(os.environ):
+        rules += [option for parent in _covered_parents(path) for option in ('--dir', parent)]
+        rules += ['--ro-bind', path, path]
+    for path in hidden:
+        rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]
+    for parent in _covered_parents(work):       # bubblewrap would make them 0700
+        rules += ['--dir', parent]
+    return rules + ['--bind', work, work, '--chdir', work]

@@ -23,7 +23,6 @@ from .rubric import Limits
 from .sandbox import Sandbox
 from .submission import Package, copy
 
-WATCHER = '/grade_watch'
 POLL = 0.1                  # s between looks at what the watcher saw
 STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
 MAX_EVENTS = 100000         # events kept of a run (a lab's run has about 20,000)

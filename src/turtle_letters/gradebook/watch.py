@@ -1,7 +1,7 @@
 """The grader's eyes in a submission's network namespace: a node of ours,
 run outside the sandbox, that reports as JSON lines on stdout every pose
 and /chatter message (with the time it came and the node that sent it),
-how many commands came on cmd_vel each COUNT_PERIOD, turtlesim's own word
+how many commands came on cmd_vel each COUNTED s, turtlesim's own word
 when its canvas is cleared or reset, and, twice a second, who publishes
 and serves what. A line "P" on stdin publishes "P" on /chatter. Run as
 `python3 -m turtle_letters.gradebook.watch`.
@@ -9,7 +9,7 @@ and serves what. A line "P" on stdin publishes "P" on /chatter. Run as
 Commands are counted unread (rospy.AnyMsg): a busy-loop controller sends
 thousands a second, and reading each would load the machine that grades,
 and so the drawings of the students graded beside it. For the same reason
-only the first CHATTER_SHOWN messages on /chatter of each COUNT_PERIOD are
+only the first CHATTER_SHOWN messages on /chatter of each COUNTED s are
 reported one by one; the rest are counted."""
 import json
 import sys
@@ -23,11 +23,11 @@ from std_msgs.msg import String
 from turtlesim.msg import Pose
 
 from ..motion.driver import CANVAS_WORDS
+from .observations import COUNTED, WATCHER
 
-NAME = '/grade_watch'
+NAME = WATCHER
 GRAPH_PERIOD = 0.5      # s between reports of the graph
-COUNT_PERIOD = 0.1      # s between counts of cmd_vel messages
-CHATTER_SHOWN = 5       # /chatter messages reported whole each COUNT_PERIOD
+CHATTER_SHOWN = 5       # /chatter messages reported whole each COUNTED s
 
 
 class Reporter:
@@ -104,7 +104,7 @@ def main():
         if heard:       # counted since `since`: the rate comes from the times, not the period
             report('chatter_count', count=heard, since=counted_at)
         counted_at = now
-        time.sleep(COUNT_PERIOD)
+        time.sleep(COUNTED)
 
 
 class Counter:

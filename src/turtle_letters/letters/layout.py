@@ -4,9 +4,11 @@ from typing import List, Tuple
 
 from .font import BUILTIN, Font, shown
 
+# turtlesim's facts, kept here once: its canvas and its tick.
 CANVAS_PIXELS = 500         # turtlesim's canvas is this many pixels square
 PIXELS_PER_METRE = 45.0
 WORLD_SIZE = (CANVAS_PIXELS - 1) / PIXELS_PER_METRE    # its usable size, meters
+SIM_TICK = 0.016            # s: turtlesim moves each turtle one step a tick
 MARGIN = 0.5                # no stroke comes closer than this to a wall
 
 

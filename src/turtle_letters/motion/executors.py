@@ -26,9 +26,9 @@ import time
 from typing import Callable, NamedTuple, Optional
 
 from ..letters.geometry import wrap
+from ..letters.layout import SIM_TICK
 from ..letters.primitives import Turn
 
-SIM_TICK = 0.016            # turtlesim's fixed step, seconds
 SETTLED = 1e-5              # m or rad: a timed primitive is done this close to its amount
 SETTLE_TICKS = 4            # a timed primitive's way back is spread over this many ticks
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex

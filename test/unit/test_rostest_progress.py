@@ -5,7 +5,7 @@ import os
 import subprocess
 import sys
 
-TOOL = os.path.join(os.path.dirname(__file__), '..', '..', 'tools', 'test_progress.py')
+TOOL = os.path.join(os.path.dirname(__file__), '..', '..', 'tools', 'rostest_progress.py')
 RUN_TESTS = '''Scanning dependencies of target run_tests_turtle_letters_rostest_test_faults.test
 -- run_tests.py: execute commands
   /usr/bin/rostest --pkgdir=/ws/src/turtle_letters --package=turtle_letters --results-filename test_faults.xml --results-base-dir "/ws/build/test_results" /ws/src/turtle_letters/test/faults.test
@@ -17,9 +17,9 @@ RUN_TESTS = '''Scanning dependencies of target run_tests_turtle_letters_rostest_
 
 def test_a_line_as_each_rostest_starts():
     sys.path.insert(0, os.path.dirname(TOOL))
-    import test_progress
+    import rostest_progress
     out, times = io.StringIO(), iter([0.0, 5.0, 754.0])
-    test_progress.main(2, io.StringIO(RUN_TESTS), out, clock=lambda: next(times))
+    rostest_progress.main(2, io.StringIO(RUN_TESTS), out, clock=lambda: next(times))
     assert out.getvalue() == ('  [1/2] rostest turtle_letters faults.test (0:05 in)\n'
                               '  [2/2] rostest turtlesim turtlesim.test (12:34 in)\n')
 
