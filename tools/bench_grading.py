@@ -22,8 +22,9 @@ import shutil
 import statistics
 import subprocess
 import tempfile
-import threading
 import time
+
+from support.grading import peak_memory_kb, started_grading    # bench.py puts test/ on the path
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
 CLASS = os.path.join(REPO, 'test', 'class')
@@ -39,28 +40,6 @@ def _grade(*args):
     return subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', *args],
                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           universal_newlines=True, env=dict(os.environ, PYTHONUNBUFFERED='1'))
-
-
-def _grade_watched(*args):
-    """grade_class.py run to its end: its exit code, and the most memory its
-    process held (VmHWM, MiB; rosrun execs it, so the pid is the grader's)."""
-    process = subprocess.Popen(['rosrun', 'turtle_letters', 'grade_class.py', *args],
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                               universal_newlines=True,
-                               env=dict(os.environ, PYTHONUNBUFFERED='1'))
-    printed, peak = [], 0
-    reader = threading.Thread(target=lambda: printed.extend(process.stdout), daemon=True)
-    reader.start()
-    while process.poll() is None:
-        try:
-            with open(f'/proc/{process.pid}/status') as f:
-                peak = max([peak] + [int(line.split()[1]) for line in f
-                                     if line.startswith('VmHWM:')])
-        except (OSError, ValueError):
-            pass
-        time.sleep(0.5)
-    reader.join(timeout=10)
-    return process.returncode, ''.join(printed), peak / 1024
 
 
 def _results(out, student):
@@ -91,10 +70,11 @@ def class_run(students, keep, jobs=2):
                                 os.path.join(subs, f's{i + 1:02}_{model}'), symlinks=True)
                 f.write(f's{i + 1:02}_{model},{name}\n')
         started = time.monotonic()
-        code, printed, memory = _grade_watched(subs, '--roster', os.path.join(top, 'roster.csv'),
-                                               '--out', out, '--jobs', str(jobs))
+        grading = started_grading(subs, '--roster', os.path.join(top, 'roster.csv'), '--out', out,
+                                  '--jobs', str(jobs))
+        memory, printed = peak_memory_kb(grading)
         minutes = (time.monotonic() - started) / 60
-        if code != 0:
+        if grading.returncode != 0:
             raise RuntimeError(f'grade_class.py failed:\n{printed[-3000:]}')
         overheads, lab = [], []
         for i in range(students):
@@ -110,7 +90,7 @@ def class_run(students, keep, jobs=2):
         return dict(students=students, jobs=jobs, minutes=minutes,
                     overhead_median_s=statistics.median(o for o, _ in overheads),
                     overhead_worst_s=worst[0], overhead_worst_student=worst[1], lab_in_class=lab,
-                    grader_mib=memory)
+                    grader_mib=memory / 1024)
     finally:
         shutil.rmtree(top, ignore_errors=True)
 

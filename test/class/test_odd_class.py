@@ -12,7 +12,7 @@ import xml.etree.ElementTree as ElementTree
 
 import pytest
 
-from support.grading import leftovers, peak_memory_kb, sandbox_processes, started_grading
+from support.grading import leftovers, nest, peak_memory_kb, sandbox_processes, started_grading
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LENA = os.path.join(HERE, 'submissions', 'c03_lena')
@@ -31,17 +31,6 @@ CONCLUSIONS = {
     'h7_printer': ('', 'fail', 'catkin_make failed: error:'),
     'o2_M\ufffdller': ('L', 'fail', 'no letter is expected'),
 }
-
-
-def nest(top, depth):
-    """`depth` folders one in another under `top`, each made relative to the last."""
-    here = os.open(top, os.O_RDONLY)
-    for _ in range(depth):
-        os.mkdir('d', dir_fd=here)
-        deeper = os.open('d', os.O_RDONLY, dir_fd=here)
-        os.close(here)
-        here = deeper
-    os.close(here)
 
 
 @pytest.fixture(scope='module')

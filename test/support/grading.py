@@ -90,3 +90,15 @@ def leftovers(before=None):
         folders += [line.split()[1] for line in f if line.startswith('turtle_letters_sandbox ')]
     return processes, [n for n in namespaces.split() if n.startswith('tlgrade')] + cgroups + \
         folders
+
+
+def nest(top, depth):
+    """`depth` folders one in another under `top`, each made relative to the
+    last (a path that long is refused), as a hostile zip may hold them."""
+    here = os.open(str(top), os.O_RDONLY)
+    for _ in range(depth):
+        os.mkdir('d', dir_fd=here)
+        deeper = os.open('d', os.O_RDONLY, dir_fd=here)
+        os.close(here)
+        here = deeper
+    os.close(here)

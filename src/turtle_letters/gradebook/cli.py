@@ -153,9 +153,13 @@ def facts_or_failure(student, rubric, place):
     except Exception as e:      # whatever the submission made the grader meet
         if place.stopping.is_set():
             raise Stopped() from None
-        problem = f'the grader failed on this submission: {type(e).__name__}: {e}'
-        return rubrics.Facts(student.expected, shown(problem), *[None] * 6), None, [], \
-            traceback.format_exc()
+        return failed(student, e), None, [], traceback.format_exc()
+
+
+def failed(student, error):
+    """The facts of a submission the grader itself failed on."""
+    problem = f'the grader failed on this submission: {type(error).__name__}: {error}'
+    return rubrics.Facts(student.expected, shown(problem), *[None] * 6)
 
 
 def grade_student(student: Student, rubric, out, place, warning=''):
@@ -261,10 +265,11 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     futures = [pool.submit(grade_student, s, rubric, out, place, warnings.get(s.id, ''))
                for s in students]
     progress, rows, stopped = Progress(len(students), place), {}, ''
-    _on_signal(_first_stop(place))
+    before = _on_signal(_first_stop(place))
     try:
         for i, future in enumerate(futures):
-            rows[i] = _finished(out, future.result(), progress, args.isolated)
+            rows[i] = _finished(out, _graded(future, students[i], rubric), progress,
+                                args.isolated)
     except KeyboardInterrupt as e:
         stopped = str(e) or 'SIGINT'
         print(f'\ngrade_class.py: {stopped}: stopping (again to force)', file=sys.stderr,
@@ -275,12 +280,26 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     finally:
         place.stopping.set()
         pool.shutdown(wait=True)
+        _on_signal(*before)
     for i, future in enumerate(futures):    # done while it stopped: they count
         if i not in rows and future.done() and not future.cancelled() and \
                 future.exception() is None:
             rows[i] = _finished(out, future.result(), progress, args.isolated)
     progress.close()
     return [rows[i] for i in sorted(rows)], stopped
+
+
+def _graded(future, student, rubric):
+    """The student's (row, facts); where the grader failed even in scoring
+    or writing their files, a row that says so, with no files."""
+    try:
+        return future.result()
+    except Stopped:
+        raise
+    except Exception as e:
+        facts = failed(student, e)
+        return reports.Row(student.id, student.name, student.expected, '',
+                           rubrics.grade(facts, rubric), 0.0, [], None), facts
 
 
 def _finished(out, graded, progress, isolated):
@@ -293,9 +312,10 @@ def _finished(out, graded, progress, isolated):
     return row
 
 
-def _on_signal(handler):
-    signal.signal(signal.SIGINT, handler)
-    signal.signal(signal.SIGTERM, handler)
+def _on_signal(handler, on_term=None):
+    """`handler` for Ctrl-C and SIGTERM (or `on_term` for it); the handlers they had."""
+    return signal.signal(signal.SIGINT, handler), \
+        signal.signal(signal.SIGTERM, on_term or handler)
 
 
 def _interrupt(number, _):

@@ -2,6 +2,7 @@
 import os
 
 from turtle_letters.gradebook import submission
+from support.grading import nest
 from turtle_letters.grading.files import remove_tree
 from turtle_letters.gradebook.submission import copy, find
 
@@ -60,18 +61,6 @@ def test_of_several_packages_the_lab_and_the_others_beside_it(tmp_path):
     assert sorted(os.path.basename(f) for f in package.others) == ['a_msgs', 'b_tutorial']
     copy(package, str(tmp_path / 'ws'))
     assert sorted(os.listdir(tmp_path / 'ws' / 'src')) == ['my_lab', 'other1', 'other2']
-
-
-def nest(top, depth):
-    """`depth` folders one in another under `top` (made relative to each, as
-    a path that long is refused)."""
-    here = os.open(str(top), os.O_RDONLY)
-    for _ in range(depth):
-        os.mkdir('d', dir_fd=here)
-        deeper = os.open('d', os.O_RDONLY, dir_fd=here)
-        os.close(here)
-        here = deeper
-    os.close(here)
 
 
 def test_a_tree_too_deep_or_too_large_is_refused_in_words(tmp_path):

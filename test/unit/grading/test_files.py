@@ -43,16 +43,8 @@ def test_a_file_name_keeps_a_folder_names_undecodable_bytes_distinct():
 
 
 def test_a_tree_deeper_than_python_recurses_is_removed(tmp_path):
+    from support.grading import nest
     from turtle_letters.grading.files import remove_tree
-    top = os.open(str(tmp_path), os.O_RDONLY)
-    here = top
-    for _ in range(1200):       # made relative to a folder: a path this long is refused
-        os.mkdir('d', dir_fd=here)
-        deeper = os.open('d', os.O_RDONLY, dir_fd=here)
-        if here != top:
-            os.close(here)
-        here = deeper
-    os.close(here)
-    os.close(top)
+    nest(tmp_path, 1200)
     remove_tree(str(tmp_path / 'd'))
     assert os.listdir(str(tmp_path)) == []

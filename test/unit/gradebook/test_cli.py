@@ -1,0 +1,55 @@
+"""The grader's own failure on one submission is that student's row, with
+its cause in one line and its traceback in their log.txt, never the end
+of the class. No submission known today makes the grader fail (each odd
+one has its own row: test/class/test_odd_class.py), so the failure is
+stood in for: the RecursionError a tree 1,100 deep once raised."""
+import os
+import signal
+
+import pytest
+
+from turtle_letters.gradebook import cli, rubric as rubrics
+from turtle_letters.gradebook.roster import Student
+
+HERE = os.path.dirname(__file__)
+RUBRIC = os.path.join(HERE, '..', '..', '..', 'config', 'rubric.yaml')
+
+
+def test_the_graders_own_failure_on_a_submission_is_its_row_only(tmp_path, monkeypatch):
+    def fails(folder):
+        raise RecursionError('maximum recursion depth exceeded')
+    monkeypatch.setattr(cli.submission, 'find', fails)
+    place = cli.Place([], isolated=False, jobs=1)
+    student = Student('a\x1b[2J1', 'Ann', 'A', str(tmp_path))
+    row, _ = cli.grade_student(student, rubrics.load(RUBRIC), str(tmp_path / 'out'), place)
+    assert (row.grade.verdict, row.grade.score) == ('fail', 0)
+    assert row.grade.reason == ('It builds: not tried: the grader failed on this submission: '
+                                'RecursionError: maximum recursion depth exceeded')
+    log = (tmp_path / 'out' / 'a%1B%5B2J1' / 'log.txt').read_text()
+    assert "==== the grader's own error" in log and 'in fails' in log
+    assert cli.said(row, True).startswith('a [2J1 Ann: drew no letter')
+
+
+def test_once_stopped_no_student_is_begun(tmp_path):
+    place = cli.Place([], isolated=False, jobs=1)
+    place.stopping.set()
+    with pytest.raises(cli.Stopped):
+        cli.grade_student(Student('a1', 'Ann', 'A', None), rubrics.load(RUBRIC),
+                          str(tmp_path / 'out'), place)
+    assert not os.path.exists(tmp_path / 'out')
+
+
+def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_goes_on(
+        tmp_path, monkeypatch):
+    def full(*_):
+        raise OSError(28, 'No space left on device')
+    monkeypatch.setattr(cli.reports, 'write_results', full)
+    args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
+                          '--no-sandbox'])
+    students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
+    rows, stopped = cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [],
+                                  args)
+    assert stopped == '' and [r.id for r in rows] == ['a1', 'b2']
+    assert rows[0].grade.reason == ('It builds: not tried: the grader failed on this '
+                                    'submission: OSError: [Errno 28] No space left on device')
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler   # pytest's, as it was
