@@ -35,6 +35,9 @@ class Order:
 
     def __init__(self, request, handle=None):
         self.request, self.handle = request, handle
+        # read now: actionlib takes its own lock to say it, and no call into
+        # actionlib may be made under the server's (a cancel takes them the other way)
+        self.goal_id = handle.get_goal_id().id if handle is not None else None
         self.control = Control()
         self.planned = None             # drawing.Planned, once planned
         self.progress = Progress(rospy.loginfo, now=self.control.clock)
@@ -116,8 +119,7 @@ class DrawServer:
             drawn, message = False, abandon(order.request, e)
         with self._lock:
             self.current = None
-            if order.handle is not None:
-                self._orders.pop(order.handle.get_goal_id().id, None)
+            self._orders.pop(order.goal_id, None)
         self.jobs.done()
         order.finished(drawn, message)
 
@@ -139,7 +141,7 @@ class DrawServer:
 
     def _accept(self, order):
         with self._lock:
-            self._orders[order.handle.get_goal_id().id] = order
+            self._orders[order.goal_id] = order
         order.handle.set_accepted(f'drawing {describe(order.request)}')
 
     def _under_way(self):
@@ -149,8 +151,9 @@ class DrawServer:
         return f'{describe(order.request)} is being drawn'
 
     def _on_cancel(self, handle):
+        goal_id = handle.get_goal_id().id       # actionlib's lock, then ours: never the other way
         with self._lock:
-            order = self._orders.get(handle.get_goal_id().id)
+            order = self._orders.get(goal_id)
         if order is not None:
             rospy.loginfo('Cancelling the drawing of %s', describe(order.request))
             order.control.cancel()
