@@ -10,6 +10,7 @@ backlog: a page whose last update is still unread is skipped (and dropped
 after STALLED s), and one too far behind gets a snapshot again."""
 import base64
 import json
+import math
 import os
 import time
 
@@ -37,6 +38,22 @@ def _colour(rgb):
 def _set_safe_headers(handler):
     for name, value in SAFE_HEADERS.items():
         handler.set_header(name, value)
+
+
+def _json(value):
+    """`value` as JSON a browser can parse: a NaN or an infinity anywhere in
+    it (which JSON cannot hold) as null."""
+    return json.dumps(_finite(value), allow_nan=False)
+
+
+def _finite(value):
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(v) for v in value]
+    return value
 
 
 def strokes_message(strokes):
@@ -107,7 +124,7 @@ class Page(tornado.websocket.WebSocketHandler):
             self.close(1013, f'the viewer shows {self.pages.most} pages already: try again later')
             return
         self.pages.open.add(self)
-        self.send(json.dumps(self.snapshot()))
+        self.send(_json(self.snapshot()))
 
     def on_message(self, message):
         """Read-only: whatever a page sends changes nothing."""
@@ -131,13 +148,13 @@ class Page(tornado.websocket.WebSocketHandler):
         key = (self.clears, self.count)
         if key not in shared:
             clears, strokes, turtles = self.view.trails.since(*key)
-            shared[key] = (clears, len(strokes), json.dumps(strokes_message(strokes)))
+            shared[key] = (clears, len(strokes), _json(strokes_message(strokes)))
         if 'turtles' not in shared:
             shared['turtles'] = turtles_message(self.view.trails.turtles_now())
             shared['room'] = self.view.room()
         clears, new, strokes_json = shared[key]
         if clears != self.clears or new > CATCH_UP:
-            return json.dumps(self.snapshot())
+            return _json(self.snapshot())
         self.count += new
         now, room = shared['turtles'], shared['room']
         moved = {n: t for n, t in now.items() if self.sent_turtles.get(n) != t}
@@ -146,8 +163,8 @@ class Page(tornado.websocket.WebSocketHandler):
         self.sent_turtles, self.sent_room = now, room
         if not (new or moved or gone or changed):
             return None
-        return (f'{{"kind": "update", "strokes": {strokes_json}, "turtles": {json.dumps(moved)}, '
-                f'"gone": {json.dumps(gone)}, "room": {json.dumps(changed)}}}')
+        return (f'{{"kind": "update", "strokes": {strokes_json}, "turtles": {_json(moved)}, '
+                f'"gone": {_json(gone)}, "room": {_json(changed)}}}')
 
     def send(self, text):
         try:

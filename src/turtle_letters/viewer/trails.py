@@ -14,6 +14,7 @@ width is not published: strokes are PEN_WIDTH wide, turtlesim's default. A
 pen-up step that ends on another line reads its colour and retraces a tick
 of it.
 """
+import math
 import threading
 from typing import Dict, List, NamedTuple, Optional, Tuple
 
@@ -58,6 +59,10 @@ class Trails:
         self.lock = threading.Lock()
 
     def pose(self, name, x, y, theta):
+        """Turtle `name` at a pose; a pose that is not all finite numbers
+        (a NaN from a broken node) is no place, and leaves it where it was."""
+        if not all(math.isfinite(v) for v in (x, y, theta)):
+            return
         with self.lock:
             turtle = self.turtles.get(name)
             drawn_to = turtle.drawn_to if turtle else (x, y)

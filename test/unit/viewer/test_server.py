@@ -48,7 +48,7 @@ def room():
     thread = threading.Thread(target=serve, daemon=True)
     thread.start()
     started.wait(5)
-    yield types.SimpleNamespace(trails=trails, port=port, pages=loops[0][1],
+    yield types.SimpleNamespace(trails=trails, view=view, port=port, pages=loops[0][1],
                                 url=f'http://127.0.0.1:{port}')
     loops[0][0].add_callback(loops[0][0].stop)
     thread.join(5)
@@ -152,3 +152,25 @@ def test_a_page_that_stops_reading_is_dropped_and_the_others_go_on(room, monkeyp
     assert heard > 20               # up to 25 updates a second, for 8 s
     assert len(room.pages.open) == 1    # the stalled one is gone
     stalled.close()
+
+
+def test_no_nan_or_infinity_ever_reaches_a_page(room):
+    """A NaN once froze every page (a browser cannot parse it, and each
+    reconnect got it again): what a page is sent is always strict JSON."""
+    room.trails.pose('/turtle1', float('nan'), 1.0, 0.0)
+    room.trails.pose('/turtle2', 1.0, 1.0, 0.0)
+    room.view.room = lambda: dict(drawings={'/alice': dict(eta=float('inf'),
+                                                           progress=float('nan'))}, scoreboard='')
+
+    def strict(text):
+        return json.loads(text, parse_constant=lambda name: pytest.fail(f'{name} sent'))
+
+    async def look():
+        connection = await tornado.websocket.websocket_connect(
+            room.url.replace('http', 'ws') + '/room')
+        snapshot = strict(await connection.read_message())
+        connection.close()
+        return snapshot
+    snapshot = asyncio.run(look())
+    assert list(snapshot['turtles']) == ['turtle2']
+    assert snapshot['room']['drawings'] == {'/alice': dict(eta=None, progress=None)}

@@ -64,3 +64,12 @@ def test_metres_map_to_turtlesims_pixels():
     assert to_pixels(0.0, 0.0) == (0.0, 499.0)
     assert to_pixels(11.088889, 11.088889) == pytest.approx((499.0, 0.0), abs=1e-3)
 
+
+
+def test_a_pose_that_is_not_finite_is_no_place():
+    trails = Trails()
+    trails.pose('/turtle1', 1.0, 1.0, 0.0)
+    for bad in ((float('nan'), 1.0, 0.0), (1.0, float('inf'), 0.0), (2.0, 1.0, float('nan'))):
+        trails.pose('/turtle1', *bad)
+    trails.colour('/turtle1', (179, 184, 255))
+    assert trails.turtles_now()['/turtle1'][:3] == (1.0, 1.0, 0.0) and trails.strokes == []
