@@ -286,6 +286,65 @@ class TurtlesimContract(unittest.TestCase):
         self.assertLess(backlog, PAUSE * 62.5 / 2, 'old poses were kept, not dropped')
         self.assertGreater(flowing, 100)
 
+    def saved_picture(self):
+        settled_pose()
+        answer = call('/turtlesim/save_canvas', Trigger)
+        self.assertTrue(answer.success, answer.message)
+        return QImage(answer.message)
+
+    def test_13_a_pen_of_width_0_draws_1_px(self):
+        """turtle.cpp makes a new QPen(colour): width 0 is Qt's default, 1 px,
+        not the old pen's width."""
+        pen = '/turtle1/set_pen'
+        call(pen, SetPen, 0, 0, 0, 0, 1)
+        row = 409                                       # the line runs through its middle
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 1.0, (499 - row - 0.5) / 45, 0.0)
+        call(pen, SetPen, 255, 0, 0, 0, 0)
+        call('/turtle1/teleport_relative', TeleportRelative, 3.0, 0.0)
+        image = self.saved_picture()
+        column = [QColor(image.pixel(100, r)).getRgb()[:3] for r in (row - 1, row, row + 1)]
+        self.assertEqual(column, [(69, 86, 255), (255, 0, 0), (69, 86, 255)])
+
+    def test_14_the_colour_sensor_reads_a_pen_down_teleports_ink_on_its_tick(self):
+        """A tick draws a teleport's line, then reads the sensor: the first
+        reading after a pen-down teleport is its ink, never what lay there."""
+        pen = '/turtle1/set_pen'
+        call(pen, SetPen, 0, 0, 0, 0, 1)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 2.0, 5.0, 0.0)
+        call(pen, SetPen, 0, 255, 0, 3, 0)
+        call('/turtle1/teleport_relative', TeleportRelative, 0.5, 0.0)    # on green ink
+        settled_pose()
+        readings = []
+        sensor = rospy.Subscriber('/turtle1/color_sensor', Color,
+                                  lambda c: readings.append((c.r, c.g, c.b)))
+        try:
+            deadline = time.monotonic() + WAIT
+            while not readings and time.monotonic() < deadline:
+                time.sleep(0.05)
+            call(pen, SetPen, 255, 0, 0, 3, 0)
+            call('/turtle1/teleport_absolute', TeleportAbsolute, 6.0, 5.0, 0.0)
+            settled_pose()
+        finally:
+            sensor.unregister()
+        self.assertEqual(readings[0], (0, 255, 0))
+        first_other = next(r for r in readings if r != (0, 255, 0))
+        self.assertEqual(first_other, (255, 0, 0), readings)
+
+    def test_15_the_colour_sensor_rounds_half_away_from_zero(self):
+        """At x = 0.5 m the turtle is at pixel 22.5: Qt's toPoint() reads
+        column 23 (half to even would read 22)."""
+        pen = '/turtle1/set_pen'
+        call(pen, SetPen, 0, 0, 0, 0, 1)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 23.5 / 45, 3.0, 0.0)
+        call(pen, SetPen, 255, 0, 0, 1, 0)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 23.5 / 45, 7.0, 0.0)   # column 23
+        call(pen, SetPen, 0, 0, 0, 0, 1)
+        call('/turtle1/teleport_absolute', TeleportAbsolute, 0.5, 5.0, 0.0)     # row 274
+        image = self.saved_picture()    # the line, looked at 60 px off the turtle's icon
+        self.assertEqual([QColor(image.pixel(c, 214)).getRgb()[:3] for c in (22, 23)],
+                         [(69, 86, 255), (255, 0, 0)])
+        colour = rospy.wait_for_message('/turtle1/color_sensor', Color, timeout=WAIT)
+        self.assertEqual((colour.r, colour.g, colour.b), (255, 0, 0))
 
 PAUSE = 16.0    # s: its 4 kB receive buffer, then the 4 kB backlog, fill in 5 s
 

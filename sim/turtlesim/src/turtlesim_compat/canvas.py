@@ -19,6 +19,13 @@ _SHELL_EDGE = QColor(27, 67, 30)
 _SKIN = QColor(139, 195, 74)
 
 
+def qt_round(value: float) -> int:
+    """A pixel position as Qt's QPointF.toPoint() gives it, as turtlesim
+    reads its colour sensor: half away from zero (Python's round() gives
+    half to even: 22.5 is 22 there, 23 here)."""
+    return int(value + 0.5) if value >= 0 else -int(-value + 0.5)
+
+
 class Canvas:
     def __init__(self, background: Tuple[int, int, int]) -> None:
         self._paths = QImage(CANVAS_PIXELS, CANVAS_PIXELS, QImage.Format_RGB32)
@@ -42,7 +49,7 @@ class Canvas:
         painter.end()
 
     def colour_at(self, x: float, y: float) -> Tuple[int, int, int]:
-        px, py = (int(round(v)) for v in to_pixels(x, y))
+        px, py = (qt_round(v) for v in to_pixels(x, y))
         px = min(max(px, 0), CANVAS_PIXELS - 1)
         py = min(max(py, 0), CANVAS_PIXELS - 1)
         c = QColor(self._paths.pixel(px, py))

@@ -212,9 +212,14 @@ class TurtlesimNode:
                 if call.take():
                     call.run()
             now = time.monotonic()
-            drawn = []
             for name, turtle in self._world.turtles.items():
-                segments, clamped_from = turtle.step(now)
+                # turtlesim's order: a teleport's line, the move, the colour sensor
+                # (it senses the teleport's ink), the move's line
+                teleported = turtle.teleport()
+                moved, clamped_from = turtle.move(now)
+                if teleported:
+                    self._canvas.draw(teleported)
+                    self.changed = True
                 if clamped_from:
                     rospy.logwarn('Oh no! I hit the wall! (Clamping from [x=%f, y=%f])',
                                   *clamped_from)
@@ -225,12 +230,10 @@ class TurtlesimNode:
                 endpoints.pose.publish(msg)
                 if endpoints.colour.get_num_connections():    # reading a pixel costs
                     endpoints.colour.publish(Color(*self._canvas.colour_at(turtle.x, turtle.y)))
-                drawn += segments
-                if turtle.linear_speed or turtle.angular:
+                if moved:       # before the next turtle senses, as in turtlesim
+                    self._canvas.draw(moved)
+                if turtle.linear_speed or turtle.angular or moved:
                     self.changed = True
-            if drawn:       # one painter for every turtle's lines
-                self._canvas.draw(drawn)
-                self.changed = True
 
     def frame(self):
         with self._lock:

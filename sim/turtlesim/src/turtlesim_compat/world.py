@@ -95,7 +95,8 @@ class Turtle:
         if off:
             self.pen.down = False
             return
-        self.pen = Pen(r, g, b, width if width else self.pen.width, True)
+        # a new pen, as turtle.cpp makes one: width 0 is Qt's default, 1 px
+        self.pen = Pen(r, g, b, width if width else 1, True)
 
     @property
     def linear_speed(self) -> float:
@@ -103,11 +104,17 @@ class Turtle:
 
     def step(self, now: float, dt: float = TICK_SECONDS
              ) -> Tuple[List[Segment], Optional[Tuple[float, float]]]:
-        """Advance one tick.
+        """Advance one tick: its teleports, then its move.
 
         Returns the lines the pen drew and, if the turtle hit a wall, the
         position it was clamped from (else None).
         """
+        teleported = self.teleport()
+        moved, hit_wall = self.move(now, dt)
+        return teleported + moved, hit_wall
+
+    def teleport(self) -> List[Segment]:
+        """A tick's first part: the teleports asked for, in order; their lines."""
         drawn: List[Segment] = []
         for request in self.pending_teleports:
             old = (self.x, self.y)
@@ -124,7 +131,14 @@ class Turtle:
                 self.y += math.sin(self.theta) * linear
             self._draw_from(old, drawn)
         self.pending_teleports = []
+        return drawn
 
+    def move(self, now: float, dt: float = TICK_SECONDS
+             ) -> Tuple[List[Segment], Optional[Tuple[float, float]]]:
+        """A tick's second part: the move commanded; its line, and where it
+        hit a wall from (or None). turtlesim reads the colour sensor between
+        the two parts, so it senses a teleport's line but not this one."""
+        drawn: List[Segment] = []
         if now - self.last_command_time > COMMAND_TIMEOUT:
             self.linear_x = self.linear_y = self.angular = 0.0
 

@@ -118,10 +118,10 @@ def test_pen_off_draws_nothing_and_keeps_its_colour():
     t.command(1.0, 0.0, 0.0, now=0.0)
     assert t.step(now=0.0)[0] == []
     assert (t.pen.colour, t.pen.width, t.pen.down) == ((255, 0, 0), 5, False)
-    t.set_pen(0, 255, 0, 0, 0)                 # width 0 keeps the width
-    assert (t.pen.colour, t.pen.width, t.pen.down) == ((0, 255, 0), 5, True)
+    t.set_pen(0, 255, 0, 0, 0)      # a new pen: width 0 is Qt's default, 1 px (the contract)
+    assert (t.pen.colour, t.pen.width, t.pen.down) == ((0, 255, 0), 1, True)
     (segment,), _ = t.step(now=0.0)
-    assert (segment.colour, segment.width) == ((0, 255, 0), 5)
+    assert (segment.colour, segment.width) == ((0, 255, 0), 1)
 
 
 @pytest.mark.parametrize('bad', [math.nan, math.inf, -math.inf])
@@ -170,3 +170,13 @@ def test_kill_of_an_unknown_turtle_is_refused():
     with pytest.raises(RequestError):
         w.kill('nobody')
     assert list(w.turtles) == ['turtle1']
+
+
+def test_a_tick_is_its_teleports_then_its_move():
+    """The node senses the colour between the two parts (the contract's order)."""
+    t = turtle_at()
+    t.command(1.0, 0.0, 0.0, now=0.0)
+    t.teleport_relative(1.0, 0.0)
+    (jump,) = t.teleport()
+    (move,), hit = t.move(now=0.0)
+    assert move.x0 == jump.x1 and move.x1 == t.x and hit is None    # the move starts there
