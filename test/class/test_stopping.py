@@ -102,8 +102,8 @@ def test_in_a_terminal_a_bar_shows_the_class_going_and_ctrl_c_stops_it(tmp_path)
     from support.terminal import Terminal
     before = sandbox_processes()
     args = ' '.join(a_class(tmp_path, 3)).replace('--jobs 2', '--jobs 1')
-    terminal = Terminal(f'rosrun turtle_letters grade_class.py {args}; echo "exit $?" > code',
-                        cwd=True)
+    terminal = Terminal(f'stty -g > before; rosrun turtle_letters grade_class.py {args}; '
+                        f'echo "exit $?" > code; stty -g > after', cwd=True)
     try:
         assert terminal.wait_for('0/3 students', 60), terminal.screen()
         assert terminal.wait_for('grading s1', 30), terminal.screen()
@@ -114,11 +114,11 @@ def test_in_a_terminal_a_bar_shows_the_class_going_and_ctrl_c_stops_it(tmp_path)
         terminal.send_keys('C-c')
         assert terminal.wait_for('SIGINT: stopping', 30), terminal.screen()
         deadline = time.monotonic() + STOPS_WITHIN
-        while not os.path.exists(os.path.join(terminal.dir, 'code')) and \
+        while not os.path.exists(os.path.join(terminal.dir, 'after')) and \
                 time.monotonic() < deadline:
             time.sleep(0.2)
         assert terminal.read('code') == 'exit 130', terminal.screen()
-        assert {'icanon', 'echo'} <= set(terminal.flags())
+        assert terminal.read('after') == terminal.read('before')
     finally:
         terminal.close()
     assert rows_of(tmp_path / 'out')[0] == ('s1', 'pass')
