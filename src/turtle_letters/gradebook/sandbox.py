@@ -24,8 +24,10 @@ import time
 from ..grading.files import remove_tree
 
 MASTER_PORT = 11311
-USER = 2000000000       # the first of the users submissions run as, one each graded at once:
-USERS = 256             # ids no system gives out (below 65534, nobody; above, subuid ranges)
+# The users submissions run as, one for each graded at once: ids far above
+# those a system gives out (under 65534) and the usual subuid ranges (100000 on).
+USER = 2000000000
+USERS = 256
 CPU_PERIOD = 100000     # us: the scheduler's period, of which a submission has a core's worth
 GiB = 1024 ** 3
 # What the sandbox sees. The system is read-only; only the work folder

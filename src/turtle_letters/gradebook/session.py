@@ -88,7 +88,10 @@ def build(box, limits):
     ended = wait_until(lambda: process.poll() is not None, limits.build,
                        lambda: not (box.stopped or box.reached()))
     if not ended:
-        os.killpg(process.pid, signal.SIGKILL)
+        try:
+            os.killpg(process.pid, signal.SIGKILL)
+        except ProcessLookupError:      # it ended as its time ran out
+            pass
     process.wait()
     reader.join(timeout=5)
     process.stdout.close()

@@ -56,3 +56,20 @@ def test_why_the_turtle_never_moved(tmp_path):
     died = '[k_drawer-4] process has died [pid 9, exit code 1].\n'
     assert why_still('KeyError: 3\n' + died, str(tmp_path), []) == \
         'k_drawer died: TypeError: unsupported operand'
+
+
+def test_of_a_flood_of_log_files_only_some_are_read_and_none_deeper_than_roslaunch_writes(
+        tmp_path):
+    """A node may write any number of log files, in folders nested at will:
+    the grader reads LOGS_READ at most, LOG_DEPTH folders down."""
+    from turtle_letters.gradebook import failures
+    logs = tmp_path / 'home' / '.ros' / 'log' / 'run'
+    logs.mkdir(parents=True)
+    for n in range(500):
+        (logs / f'spam-{n:03}.log').write_text(f'RuntimeError: log {n:03}\n')
+    deep = logs / 'a' / 'b'
+    deep.mkdir(parents=True)
+    (deep / 'hidden.log').write_text('RuntimeError: too deep\n')
+    read = failures.node_logs(str(tmp_path))
+    assert read.count('RuntimeError') == failures.LOGS_READ
+    assert 'too deep' not in read
