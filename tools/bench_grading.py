@@ -24,7 +24,8 @@ import subprocess
 import tempfile
 import time
 
-from support.grading import peak_memory_kb, started_grading    # bench.py puts test/ on the path
+# bench.py puts test/ on the path
+from support.grading import container, peak_memory_kb, started_grading
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
 CLASS = os.path.join(REPO, 'test', 'class')
@@ -112,16 +113,6 @@ def alone_runs(reps=3):
     return runs
 
 
-def _container(out):
-    """A bubblewrap container of the bench's own for a --no-sandbox run:
-    the system read-only, loopback only, `out` writable."""
-    from turtle_letters.gradebook.sandbox import underlays
-    box = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc', '--tmpfs', '/tmp']
-    for path in underlays(os.environ):
-        box += ['--ro-bind', path, path]
-    return box + ['--bind', out, out, '--unshare-net', '--unshare-pid', '--die-with-parent', '--']
-
-
 def _build_and_launch(results):
     """Seconds to build and to launch, from their criteria's lines: the
     steps the sandbox wraps (the drawing takes as long either way, and the
@@ -146,7 +137,7 @@ def sandbox_cost(reps=3):
                 if kind == 'sandboxed':
                     _grade(*args)
                 else:
-                    subprocess.run(_container(out) + ['rosrun', 'turtle_letters',
+                    subprocess.run(container(out) + ['rosrun', 'turtle_letters',
                                                       'grade_class.py', *args, '--no-sandbox'],
                                    stdout=subprocess.DEVNULL, stderr=subprocess.STDOUT)
                 times[kind].append(_build_and_launch(_results(out, 'c03_lena')[0]))

@@ -6,7 +6,6 @@ Needs root (each submission gets a network namespace); skipped elsewhere."""
 import csv
 import json
 import os
-import pathlib
 import shutil
 import subprocess
 import xml.etree.ElementTree as ElementTree
@@ -14,7 +13,7 @@ import xml.etree.ElementTree as ElementTree
 import pytest
 
 from support.children import readable_env
-from support.grading import grade_class, leftovers, sandbox_processes, tree_hash
+from support.grading import container, grade_class, leftovers, sandbox_processes, tree_hash
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SUBMISSIONS = os.path.join(HERE, 'submissions')
@@ -166,23 +165,6 @@ def test_gradescope_mode_writes_its_results_where_gradescope_reads_them(tmp_path
     results = json.loads((root / 'results' / 'results.json').read_text())
     assert results['output'].startswith('PASS') and len(results['tests']) == 8
     assert {'drawing time (s)', 'cmd_vel rate (/s)'} <= {b['name'] for b in results['leaderboard']}
-
-
-def container(writable):
-    """A bubblewrap container of the test's own, as Gradescope's is one: the
-    system read-only, no network but its loopback, `writable` writable (no
-    submission runs unsandboxed, even here)."""
-    from turtle_letters.gradebook.sandbox import underlays
-    box = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc', '--tmpfs', '/tmp']
-    for path in underlays(os.environ):      # a checkout in /tmp, as CI's may be
-        box += ['--ro-bind', path, path]
-    parents = []        # made 0755, so a cadet's user reaches what it is given (bwrap: 0700)
-    for parent in pathlib.Path(writable).parents:
-        if str(parent) in ('/tmp', '/'):
-            break
-        parents = ['--dir', str(parent)] + parents
-    return box + parents + ['--bind', str(writable), str(writable), '--unshare-net',
-                            '--unshare-pid', '--die-with-parent', '--']
 
 
 def test_no_sandbox_in_a_container_that_is_one_already(tmp_path):

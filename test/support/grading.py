@@ -4,6 +4,7 @@ here."""
 import glob
 import hashlib
 import os
+import pathlib
 import subprocess
 import tempfile
 import threading
@@ -102,3 +103,28 @@ def nest(top, depth):
         os.close(here)
         here = deeper
     os.close(here)
+
+
+def container(writable):
+    """A bubblewrap container of a test's own, as Gradescope's is one, for
+    --no-sandbox runs: the system read-only, no network but its loopback,
+    `writable` writable, the ROS environment's folders under /tmp shown (a
+    checkout there, as CI's may be); the folders above each made 0755, so a
+    cadet's user reaches them (bubblewrap would make them 0700)."""
+    from turtle_letters.gradebook.sandbox import underlays
+    box = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc', '--tmpfs', '/tmp']
+    for path in underlays(os.environ):
+        box += _reachable(path) + ['--ro-bind', path, path]
+    return box + _reachable(writable) + ['--bind', str(writable), str(writable),
+                                         '--unshare-net', '--unshare-pid', '--die-with-parent',
+                                         '--']
+
+
+def _reachable(path):
+    """bubblewrap's --dir for each folder between /tmp and `path`, outermost first."""
+    folders = []
+    for parent in pathlib.Path(path).parents:
+        if str(parent) in ('/tmp', '/'):
+            break
+        folders = ['--dir', str(parent)] + folders
+    return folders if str(path).startswith('/tmp/') else []
