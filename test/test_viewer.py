@@ -77,8 +77,11 @@ class ViewerInABrowser(unittest.TestCase):
                           'the page live, with turtle1')
         client = actionlib.SimpleActionClient('/draw', DrawAction)
         assert client.wait_for_server(rospy.Duration(30)), 'no draw action'
-        # A goal is not latched: the viewer sees its text only once it hears the goal topic.
-        wait_until(lambda: connections('/view', '/draw/goal', 'i'), 30,
+        # A goal is not latched: the viewer sees its text only once it hears the goal
+        # topic, and that holds once this client's publisher counts it (the viewer can
+        # count the connection first, and a goal sent then reached nobody but the server).
+        wait_until(lambda: connections('/view', '/draw/goal', 'i') and
+                   client.action_client.pub_goal.get_num_connections() >= 2, 30,
                    "the viewer connected to the draw action's goal topic", cls.viewer.output)
         client.send_goal(DrawGoal(text='L'))
         assert client.wait_for_result(rospy.Duration(120)), 'the L was not drawn in 120 s'

@@ -91,25 +91,29 @@ class Place:
         self.slots = queue.Queue()
         for slot in range(jobs):
             self.slots.put((slot, cores[slot % len(cores)]))
-        self.stopping, self.lock = threading.Event(), threading.Lock()
+        # re-entrant: a second Ctrl-C's handler takes it in whatever thread it lands
+        self.stopping, self.lock = threading.Event(), threading.RLock()
         self.boxes, self.current = set(), []
 
     @contextlib.contextmanager
     def sandbox(self):
-        """A sandbox in a free slot, ended by `stop` even while it runs."""
+        """A sandbox in a free slot, ended by `stop` even while it runs. It
+        is made and removed under the lock, so that a forced exit finds
+        every sandbox whole in `boxes`, never one half made or half gone."""
         slot, cpu = self.slots.get()
+        box = sandbox.Sandbox(self.hidden, self.isolated, cpu, slot=slot)
         try:
-            with sandbox.Sandbox(self.hidden, self.isolated, cpu, slot=slot) as box:
-                with self.lock:
-                    self.boxes.add(box)
-                try:
-                    if self.stopping.is_set():
-                        box.stop()
-                    yield box
-                finally:
-                    with self.lock:
-                        self.boxes.discard(box)
+            with self.lock:
+                box.__enter__()
+                self.boxes.add(box)
+            if self.stopping.is_set():
+                box.stop()
+            yield box
         finally:
+            with self.lock:
+                if box in self.boxes:
+                    box.__exit__(None, None, None)
+                    self.boxes.discard(box)
             self.slots.put((slot, cpu))
 
     def stop(self):
@@ -335,11 +339,10 @@ def _force(place):
     def force(number, _):
         print('grade_class.py: forced: no class files written', file=sys.stderr, flush=True)
         place.stop()
-        with place.lock:
-            boxes = list(place.boxes)
-        for box in boxes:
-            box.__exit__(None, None, None)
-        os._exit(128 + number)
+        with place.lock:        # every sandbox whole: none is being made or removed now
+            for box in place.boxes:
+                box.__exit__(None, None, None)
+            os._exit(128 + number)
     return force
 
 
