@@ -139,11 +139,12 @@ def facts_of(student, rubric, place):
         raise Stopped()
     drawing = reading = None
     if run.trigger is not None:
-        drawing = seen.drawing(run.events, run.since, rubric.limits.settle, run.finished)
-        reading = read(drawing.path) if drawing.started is not None else None
+        drawing = seen.drawing(run.record, run.events, run.since, rubric.limits.settle,
+                               run.finished)
+        reading = read(drawing.strokes) if drawing.strokes else None
     facts = rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
                           drawing, reading, run.stuck, run.limit, seen.own_triggers(run.events),
-                          seen.chatter_peak(run.events))
+                          seen.chatter_peak(run.events), run.broken)
     return facts, run, package.notes
 
 
@@ -218,7 +219,7 @@ def draw_picture(out, row, facts):
         min(y for s in reading.best.strokes for _, y in s)
     half_box = round(min(0.5, max(0.02, 1.5 * reading.best.fit * height)), 2)
     label = f'{row.id}: {reading.best.letter}, {100 * reading.best.fit:.1f}% off'
-    draw(path, reading.best.strokes, {label: [facts.drawing.path]}, {label: (178, 24, 43)},
+    draw(path, reading.best.strokes, {label: facts.drawing.strokes}, {label: (178, 24, 43)},
          half_box)
     return row._replace(picture=os.path.relpath(path, out))
 

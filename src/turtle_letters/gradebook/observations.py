@@ -1,104 +1,130 @@
-"""What the watcher saw of a submission's run, made sense of. No ROS here.
+"""What a run showed, made sense of. No ROS here.
 
-Events are the watcher's JSON lines as dicts: 'pose', 'cmd_vel' (a count
-of commands), 'chatter', 'chatter_count', 'canvas' (turtlesim cleared or
-reset), 'published' and 'graph', each with `t` (s, the grader's monotonic
-clock).
-Only poses from the simulator count: poses on the turtle's topic from any
-other node are made up, and a step no command could make is a teleport.
-A "P" counts as the trigger only from a node that does not drive the
-turtle: a controller that publishes its own draws without one.
+Two accounts, each a list of dicts with `t` (s, the grader's monotonic clock):
+- the record of the grader's own simulator (world.py; 'k': spawn, kill,
+  pen, clear, reset, jump, move, cmd, end): the only evidence of what was
+  drawn, and by what;
+- the watcher's events ('kind': chatter, chatter_count, published, graph):
+  who listens and talks on /chatter, and who poses as the simulator.
+A "P" counts as the trigger only from a node that does not drive a turtle:
+a controller that publishes its own draws without one.
 """
 import math
 from typing import List, NamedTuple, Optional
 
-from ..letters.layout import SIM_TICK as TICK
-
 WATCHER = '/grade_watch'    # the grader's watcher's node name (watch.py)
-STEP_SLACK = 0.01       # m a step may exceed what the commanded speed allows
-SLOW_TICKS = 1.5        # ticks' worth of travel allowed between two poses, beyond those that came
-JUMP = 0.001            # m between two poses that is a move, speed or no speed
-COUNTED = 0.1           # s: the watcher counts commands and /chatter over this period
+COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
+MOVES = ('move', 'jump')    # record lines of a turtle changing place or heading
 
 
 class Drawing(NamedTuple):
-    path: List[tuple]           # (x, y) of the simulator's poses, from where the turtle stood
-    started: Optional[float]    # t of the first move after the trigger
-    ended: Optional[float]      # t the turtle stopped for good (None: still moving)
-    commands: int               # cmd_vel messages from the first move to the end
-    made_up: List[str]          # nodes other than the simulator that published poses
-    teleports: List[tuple]      # (t, metres) of each step no command could make
-    last: Optional[float] = None    # t of the last pose drawn
-    wiped: List[tuple] = []     # (s into the drawing, 'clear' or 'reset') by turtlesim's word
+    """What the grader's simulator drew, from the first move after `since`
+    to when every turtle stood still for `settle` s."""
+    strokes: List[list]         # the driven ink: [(x, y), ...] of each unbroken line
+    started: Optional[float]    # t of the first move
+    ended: Optional[float]      # t the last turtle stopped for good (None: still moving)
+    commands: int               # commands the simulator took on cmd_vel meanwhile
+    impostors: List[str]        # the submission's nodes that posed as the simulator
+    jumps: int = 0              # teleports
+    jump_ink: int = 0           # ... of them with the pen down: ink never credited
+    last: Optional[float] = None    # t of the last move seen
+    wiped: List[tuple] = []     # (s into the drawing, 'clear' or 'reset')
+    turtles: List[str] = []     # the turtles that moved, in the order they first did
+    pen_lifts: int = 0          # set_pen calls that lifted a pen
 
     @property
     def seconds(self):
-        """How long the turtle drew: to its end, or to the last pose seen."""
+        """How long the turtles drew: to the end, or to the last move seen."""
         if self.started is None:
             return 0.0
         return max((self.ended if self.ended is not None else self.last) - self.started, 0.0)
 
+    @property
+    def points(self):
+        return [p for stroke in self.strokes for p in stroke]
+
 
 def _ever_in_graph(events, role):
     """Every node the graph reports ever held `role` (a key of a graph event)."""
-    return {name for e in events if e['kind'] == 'graph' for name in e[role]}
+    return {name for e in events if e['kind'] == 'graph' for name in e.get(role, [])}
 
 
-def simulator(events):
-    """The simulator's node names: the servers of /spawn, as the graph reports them."""
-    return _ever_in_graph(events, 'simulator')
+def impostors(events):
+    """The nodes that published a turtle's pose or served /spawn, where only
+    the grader's simulator should: nothing they say is evidence."""
+    return sorted(_ever_in_graph(events, 'pose_publishers') | _ever_in_graph(events, 'simulator'))
+
+
+def moves(record, since=-math.inf, until=math.inf):
+    return [e for e in record if e['k'] in MOVES and since <= e['t'] < until]
+
+
+def moved(record, since, until=math.inf):
+    """Whether any turtle moved between `since` and `until`."""
+    return bool(moves(record, since, until))
+
+
+def stood_for(record, since, now):
+    """How long every turtle has stood still, at `now`, since the last
+    move after `since`; None if none moved since."""
+    last = next((e['t'] for e in reversed(record) if e['k'] in MOVES), None)
+    return None if last is None or last < since else now - last
+
+
+def strokes(lines):
+    """Unbroken lines of ink: each turtle's segments joined while each
+    starts where the one before it ended (a segment None breaks its line)."""
+    joined, open_end = [], {}     # turtle: the stroke its last segment ended
+    for turtle, segment in lines:
+        if segment is None:
+            open_end.pop(turtle, None)
+            continue
+        a, b = (segment[0], segment[1]), (segment[2], segment[3])
+        stroke = open_end.get(turtle)
+        if stroke is None or stroke[-1] != a:
+            stroke = [a]
+            joined.append(stroke)
+        stroke.append(b)
+        open_end[turtle] = stroke
+    return joined
+
+
+def _end(record, first, settle, until):
+    """t of the last move before a pause of `settle` s, or None."""
+    last = first['t']
+    for e in record:
+        if e['t'] <= first['t'] or e['k'] not in MOVES:
+            continue
+        if e['t'] - last >= settle:
+            return last
+        last = e['t']
+    return last if until - last >= settle else None
+
+
+def drawing(record, events, since, settle, until=math.inf) -> Drawing:
+    """The drawing that begins with the first move at or after `since`."""
+    first = next(iter(moves(record, since, until)), None)
+    if first is None:
+        return Drawing([], None, None, 0, impostors(events))
+    ended = _end(record, first, settle, until)
+    stop = ended if ended is not None else until
+    during = [e for e in record if first['t'] <= e['t'] <= stop]
+    driven = [(e['turtle'], s) for e in during if e['k'] in MOVES
+              for s in (e['ink'] if e['k'] == 'move' else [None])]
+    jumps = [e for e in during if e['k'] == 'jump']
+    turtles = list(dict.fromkeys(e['turtle'] for e in during if e['k'] in MOVES))
+    commands = sum(e['n'] for e in record if e['k'] == 'cmd'
+                   and first['t'] <= e['t'] <= stop + 2 * COUNTED)
+    wiped = [(e['t'] - first['t'], e['k']) for e in during if e['k'] in ('clear', 'reset')]
+    return Drawing(strokes(driven), first['t'], ended, commands, impostors(events),
+                   len(jumps), sum(1 for e in jumps if e['ink']),
+                   [e for e in during if e['k'] in MOVES][-1]['t'],
+                   wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']))
 
 
 def last_graph(events):
     return next((e for e in reversed(events) if e['kind'] == 'graph'), None)
-
-
-def poses(events, since=-math.inf):
-    return [e for e in events if e['kind'] == 'pose' and e['t'] >= since]
-
-
-def moving(pose, before):
-    """Whether the turtle moved to `pose`: it has a speed, or it stands
-    elsewhere than the pose `before` it (a teleport has no speed)."""
-    jumped = before is not None and (abs(pose['x'] - before['x']) > JUMP or
-                                     abs(pose['y'] - before['y']) > JUMP)
-    return bool(pose['v'] or pose['w'] or jumped)
-
-
-def marked(sim_poses):
-    """(pose, moving) for each pose."""
-    return [(p, moving(p, before)) for p, before in zip(sim_poses, [None] + sim_poses[:-1])]
-
-
-def simulator_poses(events, since=-math.inf, until=math.inf):
-    sim = simulator(events)
-    return [p for p in poses(events, since) if p['sender'] in sim and p['t'] < until]
-
-
-def moved(events, since, until=math.inf):
-    """Whether the simulator's turtle moved between `since` and `until`."""
-    return any(m for _, m in marked(simulator_poses(events, since, until))[1:])
-
-
-def stood_for(events, since):
-    """How long, by its last pose, the simulator's turtle has stood still
-    since it last moved after `since`; None if it has not moved since.
-    Reads back from the newest event only as far as that last move."""
-    graph = last_graph(events)
-    sim = set(graph['simulator']) if graph else set()
-    newest = later = None
-    for e in reversed(events):
-        if e['t'] < since:
-            break
-        if e['kind'] != 'pose' or e['sender'] not in sim:
-            continue
-        if later is None:
-            newest = e['t']
-        elif moving(later, e):
-            return newest - later['t']
-        later = e
-    return None
 
 
 def controllers(events):
@@ -140,48 +166,3 @@ def chatter_peak(events):
     return peak
 
 
-def wiped(events, started, ended):
-    """(s into the drawing, 'clear' or 'reset') for each time turtlesim said
-    it cleared or reset its canvas while the turtle drew."""
-    sim = simulator(events)
-    return [(e['t'] - started, e['what']) for e in events if e['kind'] == 'canvas'
-            and e['sender'] in sim and started <= e['t'] <= ended]
-
-
-def teleports(sim_poses):
-    """Steps longer than the commanded speed could make: turtlesim moves a
-    turtle at most its pose's speed times a tick each tick."""
-    found = []
-    for a, b in zip(sim_poses, sim_poses[1:]):
-        step = math.hypot(b['x'] - a['x'], b['y'] - a['y'])
-        ticks = max(1.0, (b['t'] - a['t']) / TICK) + SLOW_TICKS
-        if step > max(abs(a['v']), abs(b['v'])) * TICK * ticks + STEP_SLACK:
-            found.append((b['t'], step))
-    return found
-
-
-def drawing(events, since, settle, until=math.inf) -> Drawing:
-    """The drawing that follows the trigger at `since`: from the first move
-    of the simulator's turtle to when it stood still for `settle` s."""
-    sim = simulator(events)
-    made_up = sorted({p['sender'] for p in poses(events) if p['sender'] not in sim})
-    marks = marked(simulator_poses(events, until=until))
-    first = next((i for i, (p, m) in enumerate(marks) if m and p['t'] >= since and i), None)
-    if first is None:
-        return Drawing([], None, None, 0, made_up, [])
-    last_move, end = first, None
-    for i in range(first, len(marks)):
-        pose, move = marks[i]
-        if move:
-            last_move = i
-        elif pose['t'] - marks[last_move][0]['t'] >= settle:
-            end = last_move
-            break
-    drawn = [p for p, _ in marks[first - 1:(end if end is not None else len(marks) - 1) + 1]]
-    started = marks[first][0]['t']
-    ended = marks[end][0]['t'] if end is not None else None
-    last = drawn[-1]['t']
-    commands = sum(e['count'] for e in events if e['kind'] == 'cmd_vel'
-                   and started <= e['t'] <= (ended if ended is not None else last) + COUNTED)
-    return Drawing([(p['x'], p['y']) for p in drawn], started, ended, commands, made_up,
-                   teleports(drawn), last, wiped(events, started, last))

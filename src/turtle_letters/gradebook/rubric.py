@@ -52,6 +52,7 @@ class Facts(NamedTuple):
     limit: str = ''                 # the sandbox's limit it reached, in words ('' if none)
     own_triggers: List[str] = []    # its nodes that drive the turtle and published "P" too
     chatter_peak: float = 0.0       # the most messages a second on /chatter
+    broken: str = ''                # how the grader's master or simulator was broken, if it was
 
 
 class Mark(NamedTuple):
@@ -141,6 +142,8 @@ def _wiped(facts, what):
 
 
 def _letter(facts, _):
+    if facts.broken:
+        return 0.0, f'{facts.broken}: nothing drawn is credited'
     cleared = _wiped(facts, 'clear')
     if cleared:
         return 0.0, f'{cleared}: the letter on its canvas is not whole'
@@ -169,6 +172,8 @@ def _accuracy(facts, rubric):
 
 def _ends(facts, rubric):
     d = facts.drawing
+    if facts.broken:
+        return 0.0, f'not scored: {facts.broken}'
     if d is None or d.started is None:
         return 0.0, 'the turtle never moved after the trigger' + (
             f': {facts.stuck}' if facts.stuck else '')
@@ -180,23 +185,25 @@ def _ends(facts, rubric):
 
 def _driven(facts, _):
     d = facts.drawing
+    if facts.broken:
+        return 0.0, facts.broken
     if d is None:
         return 0.0, 'not tried: the lab did not run'
-    if d.made_up:
-        return 0.0, (f'poses of the turtle were published by {", ".join(d.made_up)}, not '
-                     f'turtlesim: those poses are not graded')
+    if d.impostors:
+        return 0.0, (f'{", ".join(d.impostors)} posed as turtlesim (published poses or served '
+                     f'/spawn): nothing it says is evidence, and it is not credited')
     reset = _wiped(facts, 'reset')
     if reset:
         return 0.0, f'{reset}: the turtle was put back, not driven'
-    if d.teleports:
-        t, step = max(d.teleports, key=lambda jump: jump[1])
-        return 0.0, (f'the turtle jumped {step:.2f} m at once, farther than any command could '
-                     f'drive it ({len(d.teleports)} such jumps): a teleport')
-    if d.started is not None and d.commands == 0:
-        return 0.0, 'the turtle moved, but no command came on cmd_vel'
+    if d.jump_ink:
+        return 0.0, (f'{d.jump_ink} teleport{"s" if d.jump_ink > 1 else ""} with the pen down '
+                     f'laid ink: ink is credited only where a turtle was driven')
     if d.started is None:
         return 0.0, 'the turtle never moved'
-    return 1.0, f'driven over cmd_vel: {d.commands} commands'
+    if d.commands == 0:
+        return 0.0, 'the turtle moved, but no command came on cmd_vel'
+    travel = f', {d.jumps} teleport{"s" if d.jumps != 1 else ""} with the pen up' if d.jumps else ''
+    return 1.0, f'driven over cmd_vel: {d.commands} commands{travel}'
 
 
 CRITERIA = {

@@ -366,6 +366,7 @@ class Sandbox:
             return self
         try:
             _writable_space(self.scratch, self.user)
+            os.chmod(self.scratch, 0o711)    # the grader's world (world.py) keeps a folder here
             _run(['ip', 'netns', 'add', self.namespace])
             _run(['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up'])
             self.cgroup = Cgroup(self.namespace, self.limits, self.cpus)

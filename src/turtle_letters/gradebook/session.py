@@ -1,8 +1,9 @@
 """One submission run as the lab runs it, in its sandbox: the package built
 in a workspace of its own over this one, its launch file started with
-roslaunch in a pseudo-terminal, P and Enter typed for its talker, and the
-drawing watched until the turtle stands still. What happened is a Run,
-for the rubric to score; nothing here decides points.
+roslaunch in a pseudo-terminal against the grader's own master and
+simulator (world.py), P and Enter typed for its talker, and the drawing
+watched from the launch on, until every turtle stands still. What happened
+is a Run, for the rubric to score; nothing here decides points.
 """
 import json
 import os
@@ -22,6 +23,7 @@ from .reports import plain
 from .rubric import Limits
 from .sandbox import Sandbox
 from .submission import Package, copy
+from .world import World, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
 STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
@@ -44,6 +46,8 @@ class Run:
         self.package = package
         self.build = self.launch = self.waited = self.talker = None
         self.events, self.trigger, self.cpu_pct = [], None, None
+        self.record = []        # what the grader's simulator did (world.py)
+        self.broken = ''        # how the grader's world was broken during the run, if it was
         self.since = None       # t from which the drawing is looked for
         self.stuck = ''         # why the turtle never moved after the trigger, if it did not
         self.still_from = None  # where in the terminal's text the wait for a first move began
@@ -205,6 +209,7 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     """Copy, build, launch, type P, watch: the whole run of one submission, in `box`."""
     result = Run(package)
     prepare(package, box.work)
+    stand_in(box.work)
     box.hand_over()
     result.build, output = build(box, limits)
     result.log.append(('catkin_make', output))
@@ -217,39 +222,52 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
 def _launch_and_watch(box, limits, result):
     work = box.work
     launch = os.path.basename(result.package.launch)
-    command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && exec roslaunch "$1" "$2"',
-               work, result.package.name, launch]
-    terminal = Terminal(box.inside(command, _env(work, box.master_uri)), box)
+    world = World(box)
+    try:
+        world.start()
+        # Sourced first: the stand-in's workspace goes before the package's own.
+        command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && '
+                   'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && exec roslaunch "$2" "$3"',
+                   work, os.path.join(work, 'stand_in'), result.package.name, launch]
+        terminal = Terminal(box.inside(command, _env(work, box.master_uri)), box)
+    except BaseException:
+        world.stop()
+        raise
     watcher = Watcher(box)
     try:
-        _watch(terminal, watcher, limits, result,
+        _watch(terminal, watcher, world, limits, result,
                lambda: terminal.process.poll() is None and not box.reached()
-               and not box.stopped and not watcher.full)
+               and not box.stopped and not watcher.full and not world.broken())
     finally:
         result.finished = time.monotonic()
-        result.limit = box.reached() or watcher.overflowed()
+        result.limit = box.reached() or watcher.overflowed() or world.overflowed()
+        result.broken = world.broken()
         terminal.stop()
+        world.stop()
         watcher_said = watcher.stop()
-        result.events = list(watcher.events)
+        result.events, result.record = list(watcher.events), list(world.events)
         result.log.append((f'roslaunch {result.package.name} {launch}', terminal.text()))
+        result.log.append(("the grader's master and simulator", world.log_tail()))
         if watcher_said.strip():
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
     _explain(result, terminal, work)
 
 
-def _watch(terminal, watcher, limits, result, alive):
-    events = watcher.events
+def _watch(terminal, watcher, world, limits, result, alive):
+    """Launched at `started`: up once a node listens on /chatter or a turtle
+    moves; P typed after the turtle stood for limits.stand; the drawing
+    watched from the launch (a turtle that did not wait) or the trigger."""
+    events, record = watcher.events, world.events
     started = time.monotonic()
-    if not wait_until(lambda: _lab_up(events), limits.launch, alive):
+    if not wait_until(lambda: _listening(events) or seen.moved(record, started),
+                      limits.launch, alive):
         result.launch = Step(False, 'the lab did not come up')
         return
     up = time.monotonic()
-    listeners = ', '.join(seen.last_graph(events)['chatter_subscribers'])
-    result.launch = Step(True, f'turtlesim up, {listeners} listening on /chatter, in '
-                               f'{up - started:.1f} s', up - started)
+    result.launch = _launched(events, os.path.join(terminal.box.work, 'stand_in'), up - started)
     wait_until(lambda: False, limits.stand, alive)
-    moved = seen.moved(events, up)
-    result.waited = Step(not moved, 'the turtle moved before the trigger' if moved else
+    moved = seen.moved(record, started)
+    result.waited = Step(not moved, 'a turtle moved before the trigger' if moved else
                          f'the turtle stood still for {limits.stand:g} s until the trigger')
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
     shown = terminal.output.size
@@ -265,12 +283,30 @@ def _watch(terminal, watcher, limits, result, alive):
         watcher.publish_p()
         wait_until(lambda: seen.trigger(events, typed, by_grader=True) is not None, 5.0)
         result.trigger = seen.trigger(events, typed, by_grader=True) or time.monotonic()
-    since = result.since = up if moved else result.trigger
-    if wait_until(lambda: seen.moved(events, since), limits.start, alive):
-        wait_until(lambda: _stood(events, since, limits.settle), limits.drawing, alive)
+    since = result.since = started if moved else result.trigger
+    if wait_until(lambda: seen.moved(record, since), limits.start, alive):
+        wait_until(lambda: _stood(record, since, limits.settle), limits.drawing, alive)
     else:
         result.still_from = shown
     result.cpu_pct = cpu.share()
+
+
+def _listening(events):
+    graph = seen.last_graph(events)
+    return bool(graph and graph['chatter_subscribers'])
+
+
+def _launched(events, stand_in_folder, seconds):
+    """The launch step, once the lab is up: it started turtlesim (the
+    stand-in) and a node that listens on /chatter."""
+    listeners = seen.last_graph(events)['chatter_subscribers'] if seen.last_graph(events) else []
+    if not stand_in_started(stand_in_folder):
+        return Step(False, 'its launch file does not start turtlesim', seconds)
+    if not listeners:
+        return Step(False, 'no node subscribed to /chatter: a turtle moved without the trigger',
+                    seconds)
+    return Step(True, f'turtlesim up, {", ".join(listeners)} listening on /chatter, in '
+                      f'{seconds:.1f} s', seconds)
 
 
 def _explain(result, terminal, work):
@@ -278,7 +314,7 @@ def _explain(result, terminal, work):
     logs): made only once none of its processes runs, so that none can
     swap a file for a link or a pipe while the grader reads it."""
     text = terminal.text()
-    if result.launch is not None and not result.launch.ok:
+    if result.launch is not None and result.launch.says == 'the lab did not come up':
         result.launch = result.launch._replace(says=why_not_launched(text, result.events, work))
     if result.talker is not None and not result.talker.ok:
         why = talker_failure(text, work)
@@ -290,12 +326,6 @@ def _explain(result, terminal, work):
                                  graph['chatter_subscribers'] if graph else [])
 
 
-def _lab_up(events):
-    graph = seen.last_graph(events)
-    return bool(graph and graph['simulator'] and graph['chatter_subscribers']
-                and seen.poses(events))
-
-
-def _stood(events, since, settle):
-    still = seen.stood_for(events, since)
+def _stood(record, since, settle):
+    still = seen.stood_for(record, since, time.monotonic())
     return still is not None and still >= settle

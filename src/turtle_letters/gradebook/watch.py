@@ -1,16 +1,14 @@
-"""The grader's eyes in a submission's network namespace: a node of ours,
-run outside the sandbox, that reports as JSON lines on stdout every pose
-and /chatter message (with the time it came and the node that sent it),
-how many commands came on cmd_vel each COUNTED s, turtlesim's own word
-when its canvas is cleared or reset, and, twice a second, who publishes
-and serves what. A line "P" on stdin publishes "P" on /chatter. Run as
-`python3 -m turtle_letters.gradebook.watch`.
+"""The grader's ears in a submission's network namespace: a node of ours,
+run outside the sandbox, that reports as JSON lines on stdout each /chatter
+message (with the time it came and the node that sent it) and, twice a
+second, who publishes and serves what. A line "P" on stdin publishes "P"
+on /chatter. Run as `python3 -m turtle_letters.gradebook.watch`.
 
-Commands are counted unread (rospy.AnyMsg): a busy-loop controller sends
-thousands a second, and reading each would load the machine that grades,
-and so the drawings of the students graded beside it. For the same reason
-only the first CHATTER_SHOWN messages on /chatter of each COUNTED s are
-reported one by one; the rest are counted."""
+What was drawn is not its to see: the grader's simulator records that
+(world.py). Only the first CHATTER_SHOWN messages on /chatter of each
+COUNTED s are reported one by one, the rest counted: a talker in a busy
+loop must not load the machine that grades, and so the drawings of the
+students graded beside it."""
 import json
 import sys
 import threading
@@ -18,12 +16,10 @@ import time
 
 import rosgraph
 import rospy
-from rosgraph_msgs.msg import Log
 from std_msgs.msg import String
-from turtlesim.msg import Pose
 
-from ..motion.driver import CANVAS_WORDS
 from .observations import COUNTED, WATCHER
+from .world import SIMULATOR
 
 NAME = WATCHER
 GRAPH_PERIOD = 0.5      # s between reports of the graph
@@ -48,14 +44,18 @@ def sender(msg):
 
 
 def graph(master):
-    """Who publishes the turtle's topics, who listens on /chatter, who serves /spawn."""
+    """Who drives a turtle, who talks and listens on /chatter, and which
+    nodes besides the grader's simulator publish poses or serve /spawn."""
     publishers, subscribers, services = master.getSystemState()
     published, subscribed = dict(publishers), dict(subscribers)
-    return dict(pose_publishers=published.get('/turtle1/pose', []),
-                cmd_vel_publishers=[n for n in published.get('/turtle1/cmd_vel', []) if n != NAME],
+
+    def publishing(suffix):
+        return sorted({n for topic, nodes in publishers if topic.endswith(suffix)
+                       for n in nodes if n not in (NAME, SIMULATOR)})
+    return dict(pose_publishers=publishing('/pose'), cmd_vel_publishers=publishing('/cmd_vel'),
                 chatter_publishers=[n for n in published.get('/chatter', []) if n != NAME],
                 chatter_subscribers=[n for n in subscribed.get('/chatter', []) if n != NAME],
-                simulator=dict(services).get('/spawn', []))
+                simulator=[n for n in dict(services).get('/spawn', []) if n != SIMULATOR])
 
 
 def wait_for_master(master):
@@ -71,22 +71,12 @@ def main():
     master = rosgraph.Master(NAME)
     wait_for_master(master)
     rospy.init_node(NAME[1:], disable_signals=True, disable_rosout=True)
-    rospy.Subscriber('/turtle1/pose', Pose, lambda m: report(
-        'pose', x=m.x, y=m.y, theta=m.theta, v=m.linear_velocity, w=m.angular_velocity,
-        sender=sender(m)), queue_size=1000)
-    commands = Counter()
-    rospy.Subscriber('/turtle1/cmd_vel', rospy.AnyMsg, commands.add, queue_size=1000)
     chatter_heard = Counter()
 
     def on_chatter(message):
         if chatter_heard.add(message) < CHATTER_SHOWN:
             report('chatter', data=message.data[:80], sender=sender(message))
-
-    def on_log(message):
-        if message.msg in CANVAS_WORDS:
-            report('canvas', what=CANVAS_WORDS[message.msg], sender=sender(message))
     rospy.Subscriber('/chatter', String, on_chatter, queue_size=100)
-    rospy.Subscriber('/rosout', Log, on_log, queue_size=100)
     chatter = rospy.Publisher('/chatter', String, queue_size=1, latch=True)
     threading.Thread(target=_obey, args=(chatter, report), daemon=True).start()
     next_graph, counted_at = 0.0, time.monotonic()
@@ -97,9 +87,6 @@ def main():
             except OSError as e:
                 report('graph_error', error=str(e))
             next_graph = time.monotonic() + GRAPH_PERIOD
-        counted = commands.take()
-        if counted:
-            report('cmd_vel', count=counted)
         now, heard = time.monotonic(), chatter_heard.take()
         if heard:       # counted since `since`: the rate comes from the times, not the period
             report('chatter_count', count=heard, since=counted_at)

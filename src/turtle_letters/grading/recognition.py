@@ -6,8 +6,10 @@ its own, and the two are compared both ways: how far the path strays from
 the candidate's strokes, and how far the strokes are from anything drawn.
 The worse of the two, as a share of the letter's height, is the fit; the
 best-fitting candidate is the letter, if its fit is at most READABLE.
-A path has no pen-up moves: a cadet retraces strokes to reach the next
-one, which costs nothing here, since retraced ink lies on the strokes.
+What is read is ink: the unbroken lines a turtle drew with its pen down,
+as many as there are. Travel with the pen up is no part of it; a cadet who
+retraces strokes to reach the next one loses nothing either, since
+retraced ink lies on the strokes.
 """
 import math
 import string
@@ -108,13 +110,14 @@ def farthest(points, others, enough=math.inf):
     return math.sqrt(worst)
 
 
-def read(path, letters=string.ascii_uppercase) -> Reading:
-    """The letter of `letters` that `path` ((x, y), m) draws, best fit first."""
-    if len(path) < 2 or box(path)[3] <= 0:
+def read(ink, letters=string.ascii_uppercase) -> Reading:
+    """The letter of `letters` that `ink` (lines of (x, y), m) draws, best fit first."""
+    points = [p for line in ink for p in line]
+    if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
-    path_box = box(path)
+    path_box = box(points)
     height = path_box[3]
-    drawn = samples([path], SAMPLE * height)
+    drawn = samples([line for line in ink if line], SAMPLE * height)
     fits: Dict[str, Fit] = {}
     for letter, strokes in CANDIDATES:
         if letter not in letters:

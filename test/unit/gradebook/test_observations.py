@@ -1,68 +1,77 @@
-"""What the watcher saw, made sense of: when a drawing starts and ends,
-which poses count, and which steps no command could make."""
+"""What a run showed, made sense of: when a drawing starts and ends, which
+ink counts (the grader's simulator's record), and who triggered it."""
 import pytest
 
-from turtle_letters.gradebook.observations import (TICK, chatter_peak, drawing, moved,
-                                                   own_triggers, stood_for, trigger)
+from turtle_letters.gradebook.observations import (chatter_peak, drawing, moved, own_triggers,
+                                                   stood_for, strokes, trigger)
 
-SIM = '/turtlesim'
-
-
-def graph(t=0.0, controller='/drawer'):
-    return dict(kind='graph', t=t, simulator=[SIM], cmd_vel_publishers=[controller])
+TICK = 0.016
+PEN = [179, 184, 255, 3]
 
 
-def pose(t, x, y, v=0.0, w=0.0, sender=SIM):
-    return dict(kind='pose', t=t, x=x, y=y, theta=0.0, v=v, w=w, sender=sender)
+def graph(t=0.0, controller='/drawer', **roles):
+    return dict(dict(kind='graph', t=t, simulator=[], pose_publishers=[],
+                     cmd_vel_publishers=[controller]), **roles)
 
 
-def line(t0, x0, x1, speed=1.0):
-    """Poses one tick apart, driving along x at `speed` from x0 to x1."""
+def line(t0, x0, x1, y=5.0, turtle='turtle1', ink=True, speed=1.0):
+    """The record of a turtle driven along x at `speed` from x0 to x1."""
     n = round(abs(x1 - x0) / (speed * TICK))
-    return [pose(t0 + i * TICK, x0 + (x1 - x0) * i / n, 5.0, v=speed) for i in range(1, n + 1)]
+    xs = [x0 + (x1 - x0) * i / n for i in range(n + 1)]
+    return [dict(k='move', t=t0 + i * TICK, turtle=turtle, to=[b, y, 0.0],
+                 ink=[[a, y, b, y] + PEN] if ink else []) for i, (a, b) in
+            enumerate(zip(xs, xs[1:]), 1)]
 
 
-def standing(t0, seconds, x):
-    return [pose(t0 + i * TICK, x, 5.0) for i in range(int(seconds / TICK))]
+def jump(t, x0, x1, y=5.0, ink=False, turtle='turtle1'):
+    return dict(k='jump', t=t, turtle=turtle, to=[x1, y, 0.0],
+                ink=[[x0, y, x1, y] + PEN] if ink else [])
 
 
 def test_a_drawing_runs_from_the_first_move_after_the_trigger_to_standing_still():
-    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0) + standing(2.01, 3, 6.0)
-    d = drawing(events, since=0.5, settle=2.0)
+    record = line(1, 5.0, 6.0)
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=5.0)
     assert d.started == pytest.approx(1 + TICK)
-    assert d.ended == pytest.approx(1 + TICK * len(line(1, 5.0, 6.0)))
-    assert d.path[0] == (5.0, 5.0) and d.path[-1] == pytest.approx((6.0, 5.0))
-    assert not d.teleports and not d.made_up
+    assert d.ended == pytest.approx(record[-1]['t'])
+    assert len(d.strokes) == 1
+    assert d.strokes[0][0] == (5.0, 5.0) and d.strokes[0][-1] == pytest.approx((6.0, 5.0))
+    assert d.jumps == d.jump_ink == 0 and d.impostors == []
 
 
 def test_a_turtle_still_moving_has_not_ended():
-    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 8.0)
-    assert drawing(events, since=0.5, settle=2.0).ended is None
-    assert stood_for(events, 0.5) == 0.0
-    assert moved(events, 0.5)
+    record = line(1, 5.0, 8.0)
+    assert drawing(record, [graph()], since=0.5, settle=2.0, until=record[-1]['t']).ended is None
+    assert stood_for(record, 0.5, record[-1]['t']) == 0.0
+    assert moved(record, 0.5) and not moved(record, 10.0)
 
 
-def test_a_teleport_moves_the_turtle_but_no_command_could():
-    jump = [pose(1.0 + TICK, 7.0, 5.0)]         # 2 m in a tick, at no speed
-    events = [graph()] + standing(0, 1, 5.0) + jump + standing(1.1, 3, 7.0)
-    d = drawing(events, since=0.5, settle=2.0)
-    assert d.started is not None
-    assert [round(m, 2) for _, m in d.teleports] == [2.0]
+def test_travel_with_the_pen_up_is_no_ink_and_ink_laid_by_a_teleport_is_apart():
+    record = line(1, 1.0, 2.0) + line(2, 2.0, 3.0, ink=False) + line(3, 3.0, 4.0) + \
+        [jump(4.1, 4.0, 1.0), jump(4.2, 1.0, 4.0, ink=True)] + line(5, 4.0, 5.0)
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=10.0)
+    assert [(s[0][0], round(s[-1][0], 6)) for s in d.strokes] == [(1.0, 2.0), (3.0, 4.0),
+                                                                 (4.0, 5.0)]
+    assert d.jumps == 2 and d.jump_ink == 1
 
 
-def test_a_late_pose_is_no_teleport():
-    # two poses 0.1 s apart, at 1 m/s: the ticks between them were not seen
-    events = [graph(), pose(0.0, 5.0, 5.0), pose(1.0, 5.0, 5.0), pose(1.016, 5.016, 5.0, v=1),
-              pose(1.116, 5.116, 5.0, v=1), pose(1.132, 5.132, 5.0, v=1)]
-    assert drawing(events, since=0.5, settle=2.0).teleports == []
+def test_every_turtles_ink_counts_each_in_lines_of_its_own():
+    mixed = [(t, e) for e in line(1, 1.0, 2.0) for t in [e['t']]] + \
+        [(e['t'] + TICK / 2, e) for e in line(1, 6.0, 7.0, turtle='pen2')]
+    record = [e for _, e in sorted(mixed, key=lambda te: te[0])]
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=10.0)
+    assert sorted(round(s[-1][0], 6) for s in d.strokes) == [2.0, 7.0]
+    assert d.turtles == ['turtle1', 'pen2']
 
 
-def test_poses_from_any_node_but_the_simulator_are_made_up_and_not_drawn():
-    fake = [pose(1 + i * TICK, 5.0 + i * 0.016, 5.0, v=1.0, sender='/f_drawer') for i in range(60)]
-    events = [graph()] + standing(0, 3, 5.0) + fake
-    d = drawing(events, since=0.5, settle=2.0)
-    assert d.made_up == ['/f_drawer']
-    assert d.started is None and d.path == []
+def test_strokes_join_a_turtles_segments_only_end_to_start():
+    lines = [('a', [0, 0, 1, 0]), ('a', [1, 0, 1, 1]), ('a', [2, 2, 3, 3]), ('b', [3, 3, 4, 4])]
+    assert strokes(lines) == [[(0, 0), (1, 0), (1, 1)], [(2, 2), (3, 3)], [(3, 3), (4, 4)]]
+
+
+def test_nodes_posing_as_the_simulator_are_named():
+    events = [graph(), graph(1.0, pose_publishers=['/f_drawer'], simulator=['/fake_sim'])]
+    d = drawing(line(1, 5.0, 6.0), events, since=0.5, settle=2.0, until=9.0)
+    assert d.impostors == ['/f_drawer', '/fake_sim']
 
 
 def test_the_trigger_is_the_cadets_p_unless_the_grader_sent_it():
@@ -98,24 +107,25 @@ def test_chatter_is_judged_by_the_times_of_its_counts_not_the_watchers_period():
 
 
 def test_turtlesim_cleared_or_reset_while_the_turtle_drew():
-    said = [dict(kind='canvas', t=t, what=what, sender=sender) for t, what, sender in
-            ((0.2, 'clear', SIM), (1.5, 'clear', SIM), (1.6, 'reset', '/faker'), (9.0, 'reset', SIM))]
-    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0) + standing(2.01, 3, 6.0) + said
-    d = drawing(events, since=0.5, settle=2.0)
-    assert [(round(s, 1), what) for s, what in d.wiped] == [(0.5, 'clear')]
+    record = line(1, 5.0, 6.0) + [dict(k='clear', t=9.0)]
+    record.insert(30, dict(k='clear', t=record[29]['t']))
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=12.0)
+    assert [(round(s, 2), what) for s, what in d.wiped] == [(round(29 * TICK, 2), 'clear')]
 
 
 def test_the_commands_counted_while_the_turtle_drew():
-    counts = [dict(kind='cmd_vel', t=t, count=10) for t in (0.5, 1.5, 1.9, 4.0)]
-    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0) + standing(2.01, 3, 6.0) + counts
-    assert drawing(events, since=0.5, settle=2.0).commands == 20
+    record = line(1, 5.0, 6.0)
+    counts = [dict(k='cmd', t=t, turtle='turtle1', n=10) for t in (0.5, 1.5, 1.9, 4.0)]
+    merged = sorted(record + counts, key=lambda e: e['t'])
+    assert drawing(merged, [graph()], since=0.5, settle=2.0, until=9.0).commands == 20
 
 
-def test_the_drawing_ends_when_the_watch_says_so_and_not_before():
-    events = [graph()] + standing(0, 1, 5.0) + line(1, 5.0, 6.0)
-    assert stood_for(events, 0.5) == 0.0 and stood_for(events, 3.0) is None
-    for pose_ in standing(2.01, 3, 6.0):
-        events.append(pose_)
-        still = stood_for(events, 0.5)
-        ended = drawing(events, since=0.5, settle=2.0).ended is not None
-        assert ended == (still >= 2.0), (pose_['t'], still)
+def test_the_drawing_ends_when_the_turtles_stood_still_long_enough_and_not_before():
+    record = line(1, 5.0, 6.0)
+    end = record[-1]['t']
+    assert stood_for(record, 0.5, end + 1.0) == pytest.approx(1.0)
+    assert stood_for(record, 3.0, end + 1.0) is None
+    assert drawing(record, [graph()], 0.5, 2.0, until=end + 1.9).ended is None
+    assert drawing(record, [graph()], 0.5, 2.0, until=end + 2.0).ended == end
+    paused = record + line(end + 1.5, 6.0, 7.0)
+    assert drawing(paused, [graph()], 0.5, 2.0, until=20.0).ended == paused[-1]['t']

@@ -15,11 +15,11 @@ OK = Step(True, 'fine')
 
 
 def facts(drawing=None, expected='L', **steps):
-    drawing = drawing or Drawing(L_PATH, 1.0, 5.0, 200, [], [])
+    drawing = drawing or Drawing([L_PATH], 1.0, 5.0, 200, [])
     given = dict(build=OK, launch=OK, waited=OK, talker=OK)
     given.update(steps)
     return Facts(expected, '', given['build'], given['launch'], given['waited'],
-                 given['talker'], drawing, read(drawing.path) if drawing.path else None)
+                 given['talker'], drawing, read(drawing.strokes) if drawing.strokes else None)
 
 
 def scores_of(graded):
@@ -82,7 +82,7 @@ def test_the_wrong_letter_earns_no_accuracy():
 
 def test_accuracy_falls_linearly_between_full_and_none():
     bowed = [(1.0, 3.0), (1.2, 2.0), (1.0, 1.0), (2.2, 1.0)]    # 0.2 m off a 2 m stem: 10%
-    score = scores_of(grade(facts(Drawing(bowed, 1.0, 5.0, 9, [], [])), load(DEFAULT)))
+    score = scores_of(grade(facts(Drawing([bowed], 1.0, 5.0, 9, [])), load(DEFAULT)))
     assert score['Its accuracy'][0] == pytest.approx(10, abs=1.5)
 
 
@@ -97,9 +97,9 @@ def test_cheats_on_the_trigger_and_the_canvas_cost_the_criterion_they_break():
     rubric = load(DEFAULT)
     own = scores_of(grade(facts()._replace(own_triggers=['/v_drawer']), rubric))
     flood = scores_of(grade(facts()._replace(chatter_peak=9000.0), rubric))
-    cleared = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 200, [], [], 5.0,
+    cleared = scores_of(grade(facts(Drawing([L_PATH], 1.0, 5.0, 200, [], 0, 0, 5.0,
                                             [(2.5, 'clear')])), rubric))
-    reset = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 200, [], [], 5.0,
+    reset = scores_of(grade(facts(Drawing([L_PATH], 1.0, 5.0, 200, [], 0, 0, 5.0,
                                           [(1.0, 'reset'), (3.0, 'reset')])), rubric))
     talker, letter, driven = ('The talker publishes P on a key press',
                               'The letter drawn is the expected one',
@@ -114,25 +114,32 @@ def test_cheats_on_the_trigger_and_the_canvas_cost_the_criterion_they_break():
     assert cleared[driven][0] == 10 and reset[letter][0] == 25
 
 
-def test_made_up_poses_and_teleports_fail_the_driving():
-    made_up = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 0, ['/f_drawer'], [])),
+def test_impostors_teleported_ink_and_a_broken_world_fail_the_driving():
+    driven = 'The turtle was driven over cmd_vel'
+    made_up = scores_of(grade(facts(Drawing([L_PATH], 1.0, 5.0, 90, ['/f_drawer'])),
                              load(DEFAULT)))
-    jumped = scores_of(grade(facts(Drawing(L_PATH, 1.0, 5.0, 0, [], [(2.0, 1.5)])),
-                            load(DEFAULT)))
-    assert made_up['The turtle was driven over cmd_vel'][0] == 0
-    assert '/f_drawer' in made_up['The turtle was driven over cmd_vel'][1]
-    assert 'teleport' in jumped['The turtle was driven over cmd_vel'][1]
+    inked = scores_of(grade(facts(Drawing([L_PATH], 1.0, 5.0, 90, [], 3, 2)), load(DEFAULT)))
+    travel = scores_of(grade(facts(Drawing([L_PATH], 1.0, 5.0, 90, [], 3, 0)), load(DEFAULT)))
+    broken = scores_of(grade(facts()._replace(broken="the grader's simulator was shut down: x"),
+                             load(DEFAULT)))
+    assert made_up[driven][0] == 0 and '/f_drawer posed as turtlesim' in made_up[driven][1]
+    assert inked[driven] == (0, '2 teleports with the pen down laid ink: ink is credited only '
+                                'where a turtle was driven')
+    assert travel[driven] == (10, 'driven over cmd_vel: 90 commands, 3 teleports with the pen up')
+    assert broken[driven] == (0, "the grader's simulator was shut down: x")
+    assert broken['The letter drawn is the expected one'][0] == 0
+    assert broken['The drawing ends, the turtle standing still'][0] == 0
 
 
 def test_a_drawing_that_never_ends():
-    lines = scores_of(grade(facts(Drawing(L_PATH, 1.0, None, 900, [], [])), load(DEFAULT)))
+    lines = scores_of(grade(facts(Drawing([L_PATH], 1.0, None, 900, [])), load(DEFAULT)))
     assert lines['The drawing ends, the turtle standing still'][0] == 0
 
 
 def test_a_required_criterion_failed_fails_whatever_the_score():
-    jumped = grade(facts(Drawing(L_PATH, 1.0, 5.0, 0, [], [(2.0, 1.5)])), load(DEFAULT))
+    jumped = grade(facts(Drawing([L_PATH], 1.0, 5.0, 50, [], 1, 1)), load(DEFAULT))
     assert jumped.score == 90 and jumped.verdict == 'fail'
-    assert jumped.reason.startswith('The turtle was driven over cmd_vel: the turtle jumped')
+    assert jumped.reason.startswith('The turtle was driven over cmd_vel: 1 teleport with the pen')
 
 
 def test_required_names_only_criteria(tmp_path):

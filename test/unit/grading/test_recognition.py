@@ -20,37 +20,37 @@ def test_every_builtin_letter_is_read_at_any_size_place_and_aspect(letter):
     for height, width_scale, left, bottom in SHAPES:
         path = placed(rounded(retraced(FONT[letter].strokes), 0.03), left, bottom, height,
                       width_scale)
-        reading = read(path)
+        reading = read([path])
         assert reading.letter == letter, (height, width_scale, reading.best)
         assert reading.best.fit < 0.05, (height, width_scale, reading.best)
 
 
 def test_a_k_with_its_arms_meeting_at_the_middle_of_the_stem():
     k = [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]
-    reading = read(placed(rounded(retraced(k), 0.03), 2.0, 2.0, 2.0))
+    reading = read([placed(rounded(retraced(k), 0.03), 2.0, 2.0, 2.0)])
     assert reading.letter == 'K' and reading.best.fit < 0.05
 
 
 @pytest.mark.parametrize('bar', [0.25, 0.3, 0.4, 0.5])
 def test_an_a_with_its_bar_from_a_quarter_to_half_its_height(bar):
     a = [[(0, 0), (0.3, 1), (0.6, 0)], [(0.3 * bar, bar), (0.6 - 0.3 * bar, bar)]]
-    reading = read(placed(retraced(a), 1.0, 1.0, 3.0))
+    reading = read([placed(retraced(a), 1.0, 1.0, 3.0)])
     assert reading.letter == 'A' and reading.best.fit < 0.05, reading.best
 
 
 def test_the_labs_own_n_and_a_cadets_level_n():
-    lab_n = read(placed(FONT['N'].strokes[0], 5.5, 5.5, 3.0))
-    level_n = read(placed(rounded([(0, 0), (0, 1), (0.7, 0), (0.7, 1)], 0.03), 1, 1, 2.5))
+    lab_n = read([placed(FONT['N'].strokes[0], 5.5, 5.5, 3.0)])
+    level_n = read([placed(rounded([(0, 0), (0, 1), (0.7, 0), (0.7, 1)], 0.03), 1, 1, 2.5)])
     assert lab_n.letter == level_n.letter == 'N'
 
 
 def test_the_fit_is_the_worst_deviation_as_a_share_of_the_height():
     l_shape = [(0, 1), (0, 0), (0.6, 0)]
     bent = [(0.0, 2.0), (0.1, 1.0), (0.0, 0.0), (1.2, 0.0)]   # the stem bowed by 0.1 m
-    reading = read(placed(bent, 0, 0, 1.0) and bent)
+    reading = read([placed(bent, 0, 0, 1.0) and bent])
     assert reading.letter == 'L'
     assert reading.best.fit == pytest.approx(0.1 / 2.0, abs=0.012)
-    assert read(placed(l_shape, 0, 0, 2.0)).best.fit < 0.01
+    assert read([placed(l_shape, 0, 0, 2.0)]).best.fit < 0.01
 
 
 def _spiral():
@@ -74,6 +74,6 @@ def _scribble():
     [(2, 2)],
 ], ids=['spiral', 'scribble', 'triangle', 'flat line', 'still', 'one pose'])
 def test_paths_that_are_no_letter(path):
-    reading = read(path)
+    reading = read([path])
     assert reading.letter is None
     assert reading.best is None or reading.best.fit > READABLE

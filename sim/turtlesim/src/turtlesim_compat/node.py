@@ -36,6 +36,7 @@ from turtlesim.srv import (Kill, KillResponse, SetPen, SetPenResponse, Spawn, Sp
                            TeleportRelativeResponse)
 
 from .files import ours_to_replace
+from .record import Record, where
 from .world import CENTRE, DEFAULT_BACKGROUND, TICK_SECONDS, RequestError, World
 
 TICK_MS = int(TICK_SECONDS * 1000)
@@ -157,6 +158,7 @@ class TurtlesimNode:
         self._endpoints = {}
         self._calls = queue.Queue()
         self.changed = True   # the picture differs from the last one shown
+        self.record = Record()
         self._canvas_png = self._read_canvas_png()
         rospy.loginfo('Starting turtlesim with node name %s', rospy.get_name())
         self._canvas = canvas_factory(self._background())
@@ -215,8 +217,11 @@ class TurtlesimNode:
             for name, turtle in self._world.turtles.items():
                 # turtlesim's order: a teleport's line, the move, the colour sensor
                 # (it senses the teleport's ink), the move's line
+                before = where(turtle)
                 teleported = turtle.teleport()
+                after_jump = where(turtle)
                 moved, clamped_from = turtle.move(now)
+                self.record.turtle_ticked(turtle, before, after_jump, teleported, moved)
                 if teleported:
                     self._canvas.draw(teleported)
                     self.changed = True
@@ -234,6 +239,7 @@ class TurtlesimNode:
                     self._canvas.draw(moved)
                 if turtle.linear_speed or turtle.angular or moved:
                     self.changed = True
+            self.record.tick_ended()
 
     def frame(self):
         with self._lock:
@@ -257,6 +263,7 @@ class TurtlesimNode:
                 return
             try:
                 turtle.command(msg.linear.x, msg.linear.y, msg.angular.z, time.monotonic())
+                self.record.command(name)
             except RequestError as e:
                 rospy.logwarn_throttle(1.0, '%s/cmd_vel: %s; the command is ignored', name, e)
 
@@ -278,8 +285,11 @@ class TurtlesimNode:
         self.at_next_tick(run)
 
     def on_set_pen(self, name, req):
-        self._turtle_call(name, 'set_pen',
-                          lambda t: t.set_pen(req.r, req.g, req.b, req.width, req.off))
+        def set_pen(turtle):
+            turtle.set_pen(req.r, req.g, req.b, req.width, req.off)
+            self.record('pen', turtle=name, r=req.r, g=req.g, b=req.b, width=turtle.pen.width,
+                        off=bool(req.off))
+        self._turtle_call(name, 'set_pen', set_pen)
         return SetPenResponse()
 
     def on_teleport_absolute(self, name, req):
@@ -295,6 +305,7 @@ class TurtlesimNode:
     def _spawn(self, x, y, theta, name):
         turtle = self._world.spawn(x, y, theta, name)
         self._endpoints[turtle.name] = TurtleEndpoints(self, turtle.name)
+        self.record('spawn', turtle=turtle.name, x=x, y=y, theta=theta)
         rospy.loginfo('Spawning turtle [%s] at x=[%f], y=[%f], theta=[%f]',
                       turtle.name, x, y, theta)
         self.changed = True
@@ -315,6 +326,7 @@ class TurtlesimNode:
             except RequestError as e:
                 self._refuse('kill', e)
             self._endpoints.pop(req.name).close()
+            self.record('kill', turtle=req.name)
             self.changed = True
         self.at_next_tick(run)
         return KillResponse()
@@ -325,6 +337,7 @@ class TurtlesimNode:
 
         def run():
             self._canvas.clear(background)
+            self.record('clear')
             self.changed = True
         self.at_next_tick(run)
         return EmptyResponse()
@@ -339,6 +352,7 @@ class TurtlesimNode:
             self._endpoints.clear()
             self._world = World()
             self._canvas.clear(background)
+            self.record('reset')
             self._spawn(CENTRE, CENTRE, 0.0, '')
         self.at_next_tick(run)
         return EmptyResponse()
@@ -393,6 +407,9 @@ def main():
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda number, _frame: signalled.append(number))
     node = TurtlesimNode(Canvas)
+    # Whoever ends it (a signal, the master for a node of the same name, any
+    # caller of its XML-RPC shutdown) is told in the record, in rospy's words.
+    rospy.core.add_preshutdown_hook(lambda reason: node.record('end', why=str(reason)))
     headless = QGuiApplication.platformName() in ('offscreen', 'minimal')
 
     window = None

@@ -1,0 +1,67 @@
+"""What the simulator did to its world, told to whoever started it: one
+JSON line per change, on the file descriptor named by TURTLESIM_RECORD_FD
+(none: nothing is told). The grader (turtle_letters' grade_class.py) reads
+it from a pipe no node of ROS can reach, so it is the one account of what
+was drawn that no submission can forge. No ROS and no Qt here.
+
+Lines ('k' is the kind, 't' time.monotonic() when it happened):
+    spawn  turtle x y theta        kill   turtle
+    pen    turtle r g b width off  clear, reset (reset: every turtle gone, turtle1 anew)
+    jump   turtle to=[x, y, theta] ink=[segments]   a teleport (or several in a tick)
+    move   turtle to=[x, y, theta] ink=[segments]   a tick's move, driven by cmd_vel
+    cmd    turtle n                commands that came on cmd_vel since the last such line
+    end    why                     the simulator shuts down
+A segment is [x0, y0, x1, y1, r, g, b, width]: a line the pen left.
+"""
+import json
+import os
+import time
+
+FD_VARIABLE = 'TURTLESIM_RECORD_FD'
+COMMANDS_EVERY = 6      # ticks between counts of commands (about 0.1 s)
+
+
+def ink(segments):
+    return [[round(s.x0, 6), round(s.y0, 6), round(s.x1, 6), round(s.y1, 6), *s.colour, s.width]
+            for s in segments]
+
+
+def where(turtle):
+    return [round(turtle.x, 6), round(turtle.y, 6), round(turtle.theta, 6)]
+
+
+class Record:
+    """The account, written as it happens; a no-op when nobody asked for it."""
+
+    def __init__(self, environ=os.environ):
+        fd = environ.get(FD_VARIABLE, '')
+        self.out = os.fdopen(int(fd), 'w', buffering=1) if fd.isdigit() else None
+        self.commands = {}      # turtle: commands since the last count
+        self.ticks = 0
+
+    def __call__(self, kind, **fields):
+        if self.out is None:
+            return
+        try:
+            self.out.write(json.dumps(dict(k=kind, t=time.monotonic(), **fields)) + '\n')
+        except (OSError, ValueError):   # the reader is gone: nobody to tell
+            self.out = None
+
+    def command(self, turtle):
+        if self.out is not None:
+            self.commands[turtle] = self.commands.get(turtle, 0) + 1
+
+    def turtle_ticked(self, turtle, before, after_jump, jumped, moved):
+        """A turtle's tick: its teleports' and its move's changes, if any."""
+        if after_jump != before:
+            self('jump', turtle=turtle.name, to=list(after_jump), ink=ink(jumped))
+        now = where(turtle)
+        if now != after_jump:
+            self('move', turtle=turtle.name, to=now, ink=ink(moved))
+
+    def tick_ended(self):
+        self.ticks += 1
+        if self.ticks % COMMANDS_EVERY == 0 and self.commands:
+            for turtle, count in sorted(self.commands.items()):
+                self('cmd', turtle=turtle, n=count)
+            self.commands = {}

@@ -1,0 +1,156 @@
+"""The world a submission is graded on, and the grader's own: a ROS master
+(roscore) and the bundled simulator, started beside the sandbox in its
+network namespace, as a user the submission is not (WORLD_USER + slot).
+The submission's nodes reach them over the network, as ROS lets them; the
+simulator's account of what it drew (sim/.../record.py) comes to the grader
+over a pipe, which nothing in the sandbox can reach. That account is the
+only evidence of a drawing.
+
+A turtlesim_node the submission's launch file starts finds STAND_IN first:
+it stays up as long as the launch wants, draws nothing, and registers no
+node, so it never displaces the grader's simulator.
+"""
+import json
+import os
+import signal
+import subprocess
+import threading
+import time
+
+from .sandbox import USERS, as_user
+
+SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
+MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
+UP_SECONDS = 30.0               # for the master and the simulator to come up
+_REPOSITORY = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.realpath(__file__)))))
+SIM_FOLDER = os.path.join(_REPOSITORY, 'sim', 'turtlesim')
+STAND_IN = """#!/bin/sh
+# The grader runs the simulator (turtle_letters' grade_class.py): this
+# stands in for turtlesim_node, draws nothing and stays up until ended.
+: > "$(dirname "$0")/../../started"
+exec sleep infinity
+"""
+
+
+class WorldError(RuntimeError):
+    """The grader's own world did not come up; the message says why."""
+
+
+def stand_in(work):
+    """A workspace in `work` whose turtlesim_node is the stand-in: its path,
+    to be put first on the submission's CMAKE_PREFIX_PATH at launch."""
+    folder = os.path.join(work, 'stand_in')
+    os.makedirs(os.path.join(folder, 'lib', 'turtlesim'), exist_ok=True)
+    open(os.path.join(folder, '.catkin'), 'w').close()
+    script = os.path.join(folder, 'lib', 'turtlesim', 'turtlesim_node')
+    with open(script, 'w') as f:
+        f.write(STAND_IN)
+    os.chmod(script, 0o755)
+    return folder
+
+
+def stand_in_started(folder):
+    return os.path.exists(os.path.join(folder, 'started'))
+
+
+class World:
+    """roscore and the simulator for one sandbox (`box`); `events` is the
+    simulator's record as it comes, one dict a line ('k', 't', ...)."""
+
+    def __init__(self, box):
+        # its user is never a submission's: each slot's sandbox user, USERS on
+        self.box, self.user = box, box.user + USERS
+        self.home = os.path.join(box.scratch, 'world')
+        self.events, self.full = [], False
+        self.master = self.simulator = self.reader = None
+
+    def _env(self):
+        env = {name: value for name, value in os.environ.items()
+               if name in ('PATH', 'ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH',
+                           'LD_LIBRARY_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_ROOT',
+                           'ROS_ETC_DIR', 'ROS_PYTHON_VERSION')}
+        env['PYTHONPATH'] = os.path.join(SIM_FOLDER, 'src') + ':' + env.get('PYTHONPATH', '')
+        env.update(HOME=self.home, ROS_HOME=self.home, TMPDIR=self.home, LANG='C.UTF-8',
+                   ROS_MASTER_URI=self.box.master_uri, ROS_IP='127.0.0.1',
+                   QT_QPA_PLATFORM='offscreen', PYTHONUNBUFFERED='1')
+        return env
+
+    def start(self):
+        """Starts both and waits for the simulator's turtle1: the world is up."""
+        os.mkdir(self.home, 0o700)
+        os.chown(self.home, self.user, self.user)
+        log = open(os.path.join(self.home, 'world.log'), 'wb')
+        port = self.box.master_uri.rsplit(':', 1)[1]
+        self.master = self._started(['roscore', '-p', port], log)
+        read_end, write_end = os.pipe()
+        env = dict(self._env(), TURTLESIM_RECORD_FD=str(write_end))
+        self.simulator = self._started(
+            ['/usr/bin/python3', os.path.join(SIM_FOLDER, 'scripts', 'turtlesim_node'),
+             f'__name:={SIMULATOR[1:]}'], log, env, (write_end,))
+        os.close(write_end)
+        log.close()
+        self.reader = threading.Thread(target=self._read, args=(read_end,), daemon=True)
+        self.reader.start()
+        deadline = time.monotonic() + UP_SECONDS
+        while not any(e['k'] == 'spawn' for e in self.events[:5]):
+            if self.broken() or time.monotonic() > deadline or self.box.stopped:
+                raise WorldError(f"the grader's master and simulator did not come up: "
+                                 f"{self.broken() or 'no turtle within %g s' % UP_SECONDS}"
+                                 f"; see {self.log_tail()!r}")
+            time.sleep(0.05)
+
+    def _started(self, argv, log, env=None, fds=()):
+        return self.box.started(subprocess.Popen(
+            self.box.beside(as_user(self.user) + argv), env=env or self._env(),
+            cwd=self.home, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
+            pass_fds=fds, start_new_session=True))
+
+    def _read(self, fd):
+        with os.fdopen(fd, 'rb') as lines:
+            for line in lines:
+                if len(self.events) >= MAX_RECORD:
+                    self.full = True
+                    continue
+                try:
+                    event = json.loads(line)
+                except ValueError:
+                    continue
+                if isinstance(event, dict) and 'k' in event and 't' in event:
+                    self.events.append(event)
+
+    def broken(self):
+        """Why the world is no longer whole (in words), or ''."""
+        ended = next((e for e in self.events if e['k'] == 'end'), None)
+        if ended is not None:
+            return f"the grader's simulator was shut down: {ended.get('why', '?')}"
+        if self.simulator is not None and self.simulator.poll() is not None:
+            return f"the grader's simulator ended (exit {self.simulator.returncode})"
+        if self.master is not None and self.master.poll() is not None:
+            return f"the grader's ROS master was shut down (exit {self.master.returncode})"
+        return ''
+
+    def overflowed(self):
+        return (f"more than {MAX_RECORD} changes in the grader's simulator: it stopped "
+                f"recording" if self.full else '')
+
+    def log_tail(self, size=2000):
+        try:
+            with open(os.path.join(self.home, 'world.log'), 'rb') as f:
+                f.seek(0, os.SEEK_END)
+                f.seek(max(0, f.tell() - size))
+                return f.read().decode('utf-8', 'replace')
+        except OSError:
+            return ''
+
+    def stop(self):
+        """Ends both; the record read to its end."""
+        for process in (self.simulator, self.master):
+            if process is not None and process.poll() is None:
+                try:
+                    os.killpg(process.pid, signal.SIGKILL)
+                except OSError:
+                    pass
+                process.wait()
+        if self.reader is not None:
+            self.reader.join(timeout=5)
