@@ -31,13 +31,19 @@ CONCLUSIONS = {
     'c05_omar': ('O', '', 'fail', "It builds: catkin_make failed"),
     'c06_pavel': ('P', '', 'fail', 'Cannot locate node of type [controler.py]'),
     'c07_quinn': ('Q', 'O', 'fail', 'drew O, expected Q'),
-    'c08_tariq': ('T', 'T', 'fail', 'a teleport'),
+    'c08_tariq': ('T', '', 'fail', 'no ink was driven: 3 teleports laid all there is'),
     'c09_fatima': ('F', '', 'fail', 'nothing was drawn'),
     'c10_sam': ('S', '', 'fail', f'no package.xml in {SUBMISSIONS}/c10_sam'),
     'c11_zoe': ('Z', '', 'fail', 'no submission'),
     'c12_ursula': ('U', 'U', 'fail', 'turtlesim was cleared'),
     'c13_victor': ('V', 'V', 'pass', 'drives the turtle and published "P"'),
     'c14_lars': ('L', 'L', 'pass', 'every criterion met'),     # a pause of 3 s between strokes
+    'c15_carmen': ('C', 'C', 'pass', 'a turtle moved without the trigger'),    # draws at launch
+    'c16_noah': ('N', 'N', 'pass', 'no launch file: the grader started its executables '
+                                   '(n_controller.py, talker.py)'),
+    'c17_ivan': ('I', 'I', 'pass', 'every criterion met'),     # launch files included, one I
+    'c18_theo': ('T', 'T', 'pass', 'every criterion met'),     # his own turtle, turtle1 killed
+    'c19_farah': ('F', 'F', 'pass', 'every criterion met'),    # the pen lifted to travel
     'x_late': ('', 'I', 'fail', 'no letter is expected'),
 }
 
@@ -92,7 +98,7 @@ def test_the_files_handed_back(graded):
     log = open(os.path.join(out, 'c01_nadia', 'log.txt')).read()
     assert 'catkin_make' in log and "NameError: name 'raw_input' is not defined" in log
     suite = ElementTree.parse(os.path.join(out, 'junit.xml')).getroot()
-    assert suite.get('tests') == '15' and suite.get('failures') == '10'
+    assert suite.get('tests') == '20' and suite.get('failures') == '10'
 
 
 def test_nothing_is_left_behind(graded):

@@ -30,6 +30,9 @@ CONCLUSIONS = {
     'h4_forker': ('', 'fail', 'process limit of 256 reached'),
     'h5_forever': ('I', 'pass', ''),
     'h6_flood': ('I', 'pass', '/chatter was flooded'),
+    'h9_forger': ('', 'fail', 'its launch file does not start turtlesim'),
+    'h10_killer': ('I', 'fail', "the grader's simulator was shut down: external shutdown request "
+                                "from [/killer]: [HOSTILE]: nothing drawn is credited"),
 }
 LINGERING = ('sleep 987653', 'sleep 987654', 'sleep 987655')
 PLANTED = ('json', 'rosgraph')      # modules every process of the grader's imports
@@ -89,6 +92,15 @@ def test_each_hostile_cadet_gets_the_row_an_instructor_would(graded):
         row = rows[hostile]
         assert (row['drawn'], row['verdict']) == (drawn, verdict), row
         assert words in row['reason'], row
+
+
+def test_a_forged_simulator_earns_nothing_it_forged(room, graded):
+    written = json.loads((room['out'] / 'h9_forger' / 'results.json').read_text())
+    said = {t['name']: (t['score'], t['output']) for t in written['tests']}
+    assert said['The letter drawn is the expected one'] == (0, 'nothing was drawn')
+    assert said['The turtle was driven over cmd_vel'] == (
+        0, '/turtlesim posed as turtlesim (published poses or served /spawn): nothing it says '
+           'is evidence, and it is not credited')
 
 
 def test_each_neighbour_gets_the_grade_lena_gets_alone(room, graded):

@@ -12,7 +12,8 @@ import time
 
 from support.children import readable_env
 
-SANDBOX_USERS = range(2000000000, 2000000000 + 256)   # turtle_letters.gradebook.sandbox.USER(S)
+# turtle_letters.gradebook.sandbox.USER(S): the submissions' users, then their worlds' (world.py)
+SANDBOX_USERS = range(2000000000, 2000000000 + 2 * 256)
 CGROUPS = '/sys/fs/cgroup'
 
 

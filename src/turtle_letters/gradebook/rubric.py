@@ -149,7 +149,9 @@ def _letter(facts, _):
         return 0.0, f'{cleared}: the letter on its canvas is not whole'
     reading = facts.reading
     if reading is None or reading.best is None:
-        return 0.0, 'nothing was drawn'
+        teleported = facts.drawing.jump_ink if facts.drawing else 0
+        return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '
+                     f'laid all there is' if teleported else 'nothing was drawn')
     if reading.letter is None:
         return 0.0, (f'no letter reads from the path (closest: {reading.best.letter}, '
                      f'{100 * reading.best.fit:.0f}% of its height off)')
@@ -202,8 +204,14 @@ def _driven(facts, _):
         return 0.0, 'the turtle never moved'
     if d.commands == 0:
         return 0.0, 'the turtle moved, but no command came on cmd_vel'
-    travel = f', {d.jumps} teleport{"s" if d.jumps != 1 else ""} with the pen up' if d.jumps else ''
-    return 1.0, f'driven over cmd_vel: {d.commands} commands{travel}'
+    return 1.0, 'driven over cmd_vel: ' + ', '.join(filter(None, [
+        f'{d.commands} commands', d.jumps and _counted(d.jumps, 'teleport') + ' with the pen up',
+        _counted(d.pen_lifts, 'pen lift'),
+        f'by {", ".join(d.turtles)}' if d.turtles not in ([], ['turtle1']) else '']))
+
+
+def _counted(n, what):
+    return f'{n} {what}{"s" if n > 1 else ""}' if n else ''
 
 
 CRITERIA = {

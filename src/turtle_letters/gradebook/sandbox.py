@@ -139,7 +139,7 @@ def problem():
     return None
 
 
-def _kill_user(user):
+def kill_user(user):
     """Kills every process of `user` (a submission's, outside a sandbox:
     double forks and setsid included, as no process of it can change user)."""
     for _ in range(100):
@@ -349,6 +349,7 @@ class Sandbox:
         self.isolated, self.limits = isolated, limits or LIMITS
         self.cpus = [cpu] if cpu is not None else None
         self.user = USER + slot % USERS
+        self.world_user = self.user + USERS     # the grader's master and simulator's (world.py)
         self.hidden = [os.path.abspath(h) for h in hidden if os.path.exists(h)]
         self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
         port = MASTER_PORT if isolated else _free_port()
@@ -388,8 +389,9 @@ class Sandbox:
     def __exit__(self, *_):
         if self.cgroup is not None:
             self.cgroup.remove()
+        kill_user(self.world_user)
         if not self.isolated and self.runs_as_its_user():     # no PID namespace: by its user
-            _kill_user(self.user)
+            kill_user(self.user)
         if self.isolated:
             _run(['ip', 'netns', 'delete', self.namespace], check=False)
             _run(['umount', '--lazy', self.scratch], check=False)
@@ -413,8 +415,9 @@ class Sandbox:
                 pass
         if self.cgroup is not None:
             self.cgroup.kill()
+        kill_user(self.world_user)
         if not self.isolated and self.runs_as_its_user():
-            _kill_user(self.user)
+            kill_user(self.user)
 
     def reached(self):
         """The words of the first limit the submission reached, or ''."""

@@ -8,6 +8,7 @@ is a Run, for the rubric to score; nothing here decides points.
 import json
 import os
 import pty
+import re
 import shutil
 import signal
 import subprocess
@@ -15,6 +16,7 @@ import tempfile
 import threading
 import time
 from typing import NamedTuple
+from xml.sax.saxutils import quoteattr
 
 from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
@@ -22,7 +24,7 @@ from .processes import Capped, ControllerCpu
 from .reports import plain
 from .rubric import Limits
 from .sandbox import Sandbox
-from .submission import Package, copy
+from .submission import MAX_NODES, Package, copy, scripts
 from .world import World, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
@@ -52,6 +54,7 @@ class Run:
         self.stuck = ''         # why the turtle never moved after the trigger, if it did not
         self.still_from = None  # where in the terminal's text the wait for a first move began
         self.limit = ''         # the sandbox's limit the submission reached, in words
+        self.generated = ''     # the executables the grader started, for want of a launch file
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
 
@@ -219,16 +222,42 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     return result
 
 
+def generated_launch(box, package):
+    """For a package without a launch file, the one the grader writes: each
+    executable of the package (its scripts, and what its build made) started
+    as rosrun would, all in roslaunch's terminal. Its path, and the names."""
+    built = os.path.join(box.work, 'ws', 'devel', 'lib', package.name)
+    names = sorted(set(scripts(package.folder)) | set(scripts(built, 0)))[:MAX_NODES]
+    lines = [f'  <node pkg={quoteattr(package.name)} type={quoteattr(name)} '
+             f'name="{_node_name(name)}{i}" output="screen"/>\n' for i, name in enumerate(names)]
+    # a name of its own: the submission's build could have left a link anywhere in `work`
+    fd, path = tempfile.mkstemp(prefix='grader_', suffix='.launch', dir=box.work)
+    with os.fdopen(fd, 'w') as f:
+        f.write('<launch>\n' + ''.join(lines) + '</launch>\n')
+    os.chmod(path, 0o644)
+    return path, names
+
+
+def _node_name(executable):
+    stem = re.sub(r'[^A-Za-z0-9_]', '_', os.path.splitext(executable)[0])
+    return stem if stem[:1].isalpha() else f'n_{stem}'
+
+
 def _launch_and_watch(box, limits, result):
     work = box.work
-    launch = os.path.basename(result.package.launch)
+    if result.package.launch:
+        launch = [result.package.name, os.path.basename(result.package.launch)]
+    else:
+        path, names = generated_launch(box, result.package)
+        launch = [path]
+        result.generated = ', '.join(names) or 'none'
     world = World(box)
     try:
         world.start()
         # Sourced first: the stand-in's workspace goes before the package's own.
         command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && '
-                   'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && exec roslaunch "$2" "$3"',
-                   work, os.path.join(work, 'stand_in'), result.package.name, launch]
+                   'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && shift && '
+                   'exec roslaunch "$@"', work, os.path.join(work, 'stand_in')] + launch
         terminal = Terminal(box.inside(command, _env(work, box.master_uri)), box)
     except BaseException:
         world.stop()
@@ -246,11 +275,14 @@ def _launch_and_watch(box, limits, result):
         world.stop()
         watcher_said = watcher.stop()
         result.events, result.record = list(watcher.events), list(world.events)
-        result.log.append((f'roslaunch {result.package.name} {launch}', terminal.text()))
+        result.log.append((f'roslaunch {" ".join(launch)}', terminal.text()))
         result.log.append(("the grader's master and simulator", world.log_tail()))
         if watcher_said.strip():
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
     _explain(result, terminal, work)
+    if result.generated and result.launch is not None:
+        result.launch = Step(False, f'no launch file: the grader started its executables '
+                                    f'({result.generated}) as a launch file would')
 
 
 def _watch(terminal, watcher, world, limits, result, alive):

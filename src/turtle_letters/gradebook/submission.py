@@ -3,6 +3,7 @@ their folder, its name, and the launch file the lab runs. No ROS here: the
 files are read as plain XML, never run (a launch file's $(eval) is Python).
 """
 import os
+import re
 import shutil
 import stat
 import xml.etree.ElementTree as ElementTree
@@ -14,6 +15,8 @@ SKIPPED = {'.git', 'build', 'devel', 'install', 'logs', '__pycache__'}
 MAX_BYTES = 1 << 20      # a package.xml or launch file larger than this is not read
 MAX_DEPTH = 40           # folders within folders a submission may nest
 MAX_ENTRIES = 20000      # files and folders a submission may hold
+MAX_NODES = 20           # executables the grader starts for a package without a launch file
+INCLUDE_DEPTH = 8        # launch files within launch files followed
 SIMULATOR = 'turtlesim'  # a package of this name is the grader's to run, not the submission's
 
 
@@ -85,19 +88,45 @@ def launch_files(folder):
     return sorted(found)
 
 
-def nodes(launch_root) -> List[tuple]:
-    """(pkg, type) of every <node> in a launch file's XML."""
-    return [(n.get('pkg', ''), n.get('type', '')) for n in launch_root.iter('node')]
+def nodes(launch_file, packages, depth=0) -> List[tuple]:
+    """(pkg, type) of every <node> a launch file starts: in <group>s, and
+    in the files it <include>s from the submission's own packages
+    (`packages`: name: folder), to INCLUDE_DEPTH files deep. Read as XML,
+    never run: an include's `$(find pkg)` and `$(dirname)` are resolved
+    here, and one whose path needs anything else is not followed."""
+    root = _xml(launch_file)
+    if root is None:
+        return []
+    found = [(n.get('pkg', ''), n.get('type', '')) for n in root.iter('node')]
+    for include in root.iter('include'):
+        path = _included(include.get('file', ''), launch_file, packages)
+        if path and depth < INCLUDE_DEPTH:
+            found += nodes(path, packages, depth + 1)
+    return found
 
 
-def lab_launch(folder):
-    """(rank, file): the launch file that starts turtlesim and a node of
-    another package (the cadet's controller), rank 0; else one with
+def _included(path, launch_file, packages):
+    """The file an <include> names, inside one of `packages`, or None."""
+    path = path.replace('$(dirname)', os.path.dirname(launch_file))
+    found = re.fullmatch(r'\$\(find ([\w-]+)\)(/.*)', path)
+    if found:
+        if found.group(1) not in packages:
+            return None
+        path = packages[found.group(1)] + found.group(2)
+    if '$(' in path or not os.path.isabs(path):
+        return None
+    path = os.path.normpath(path)
+    inside = any(path.startswith(folder.rstrip('/') + '/') for folder in packages.values())
+    return path if inside and os.path.isfile(path) else None
+
+
+def lab_launch(folder, packages=None):
+    """(rank, file): the launch file whose whole tree starts turtlesim and a
+    node of another package (the cadet's controller), rank 0; else one with
     turtlesim, or with another node; else the first; (4, None) for none."""
     ranked = [(4, None)]
     for name in launch_files(folder):
-        root = _xml(os.path.join(folder, name))
-        started = nodes(root) if root is not None else []
+        started = nodes(os.path.join(folder, name), packages or {'': folder})
         has_sim = any(pkg == 'turtlesim' for pkg, _ in started)
         has_other = any(pkg != 'turtlesim' for pkg, _ in started)
         ranked.append((3 - 2 * has_sim - has_other, name))
@@ -126,7 +155,9 @@ def find(top) -> Package:
     if not ours:
         return Package('', named[0][0], None, f'its only package is named {SIMULATOR}, as the '
                        f'simulator is: the grader runs {SIMULATOR} itself', notes=notes)
-    folder, name = min(ours, key=lambda fn: (lab_launch(fn[0])[0], fn[0].count(os.sep), fn[0]))
+    packages = {n: f for f, n in reversed(ours) if n}     # the shallowest of a name
+    folder, name = min(ours, key=lambda fn: (lab_launch(fn[0], packages)[0],
+                                             fn[0].count(os.sep), fn[0]))
     if not name:
         return Package('', folder, None, f'{os.path.join(folder, "package.xml")} names no package',
                        notes=notes)
@@ -143,9 +174,28 @@ def find(top) -> Package:
         else:
             kept[other_name] = other
             others.append(other)
-    launch = lab_launch(folder)[1]
-    problem = '' if launch else f'no launch file in {folder}'
-    return Package(name, folder, launch, problem, others, notes)
+    launch = lab_launch(folder, packages)[1]
+    return Package(name, folder, launch, '', others, notes)
+
+
+def scripts(folder, depth=3):
+    """The names of the executable plain files in a package's folders, as
+    rosrun finds them (links are not followed), to `depth` folders deep."""
+    found, stack = set(), [(folder, 0)]
+    while stack and len(found) < MAX_NODES:
+        here, level = stack.pop()
+        try:
+            entries = list(os.scandir(here))
+        except OSError:
+            continue
+        for entry in entries:
+            if entry.is_dir(follow_symlinks=False) and entry.name not in SKIPPED \
+                    and not entry.name.startswith('.') and level < depth:
+                stack.append((entry.path, level + 1))
+            elif entry.is_file(follow_symlinks=False) and os.access(entry.path, os.X_OK) \
+                    and not entry.name.startswith('.'):
+                found.add(entry.name)
+    return sorted(found)[:MAX_NODES]
 
 
 def _left_out(folder, names):

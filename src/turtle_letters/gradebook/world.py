@@ -1,6 +1,6 @@
 """The world a submission is graded on, and the grader's own: a ROS master
 (roscore) and the bundled simulator, started beside the sandbox in its
-network namespace, as a user the submission is not (WORLD_USER + slot).
+network namespace, as a user the submission is not (the sandbox's world_user).
 The submission's nodes reach them over the network, as ROS lets them; the
 simulator's account of what it drew (sim/.../record.py) comes to the grader
 over a pipe, which nothing in the sandbox can reach. That account is the
@@ -17,7 +17,7 @@ import subprocess
 import threading
 import time
 
-from .sandbox import USERS, as_user
+from .sandbox import as_user, kill_user
 
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
 MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
@@ -59,8 +59,7 @@ class World:
     simulator's record as it comes, one dict a line ('k', 't', ...)."""
 
     def __init__(self, box):
-        # its user is never a submission's: each slot's sandbox user, USERS on
-        self.box, self.user = box, box.user + USERS
+        self.box, self.user = box, box.world_user     # never a submission's
         self.home = os.path.join(box.scratch, 'world')
         self.events, self.full = [], False
         self.master = self.simulator = self.reader = None
@@ -144,13 +143,18 @@ class World:
             return ''
 
     def stop(self):
-        """Ends both; the record read to its end."""
+        """Ends both, and what roscore started (roslaunch gives each node a
+        session of its own: only their user finds them all); the record
+        read to its end."""
         for process in (self.simulator, self.master):
             if process is not None and process.poll() is None:
                 try:
                     os.killpg(process.pid, signal.SIGKILL)
                 except OSError:
                     pass
+        kill_user(self.user)
+        for process in (self.simulator, self.master):
+            if process is not None:
                 process.wait()
         if self.reader is not None:
             self.reader.join(timeout=5)

@@ -26,15 +26,16 @@ _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
 _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
 # How cadets draw letters with rotate and move, beside the font's glyphs:
 # square corners, a K's arms meeting at the stem's middle, an A's bar from a
-# quarter to half its height, an N with level feet.
+# quarter to half its height, an N with level feet, an I of one stroke. A
+# square-cornered O is an O: no D is drawn with four right angles.
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.15, 0.5), (0.45, 0.5)]]),
     ('B', [_SQUARE_P, [(0.6, 0.5), (0.6, 0), (0, 0)]]),
     ('C', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0)]]),
-    ('D', [_SQUARE_O]),
     ('G', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0), (0.6, 0.45), (0.3, 0.45)]]),
+    ('I', [[(0, 0), (0, 1)]]),
     ('J', [[(0.6, 1), (0.6, 0), (0, 0), (0, 0.3)]]),
     ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
     ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
@@ -76,7 +77,8 @@ def placed(strokes, path_box):
     x, y, w, h = path_box
     aspect = min(max(w / h, w0 / h0 / MAX_STRETCH), w0 / h0 * MAX_STRETCH)
     width, left = aspect * h, x + (w - aspect * h) / 2
-    return [[(left + (px - x0) / w0 * width, y + (py - y0) / h0 * h) for px, py in s]
+    across = width / w0 if w0 else 0.0      # a candidate of no width (a plain I) stays a line
+    return [[(left + (px - x0) * across, y + (py - y0) / h0 * h) for px, py in s]
             for s in strokes]
 
 

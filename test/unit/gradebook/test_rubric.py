@@ -126,6 +126,9 @@ def test_impostors_teleported_ink_and_a_broken_world_fail_the_driving():
     assert inked[driven] == (0, '2 teleports with the pen down laid ink: ink is credited only '
                                 'where a turtle was driven')
     assert travel[driven] == (10, 'driven over cmd_vel: 90 commands, 3 teleports with the pen up')
+    own = scores_of(grade(facts(Drawing([L_PATH], 1.0, 5.0, 90, [], turtles=['theo'],
+                                        pen_lifts=1)), load(DEFAULT)))
+    assert own[driven] == (10, 'driven over cmd_vel: 90 commands, 1 pen lift, by theo')
     assert broken[driven] == (0, "the grader's simulator was shut down: x")
     assert broken['The letter drawn is the expected one'][0] == 0
     assert broken['The drawing ends, the turtle standing still'][0] == 0

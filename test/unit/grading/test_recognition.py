@@ -53,6 +53,15 @@ def test_the_fit_is_the_worst_deviation_as_a_share_of_the_height():
     assert read([placed(l_shape, 0, 0, 2.0)]).best.fit < 0.01
 
 
+def test_a_square_o_a_plain_i_and_an_f_drawn_with_its_pen_lifted():
+    square_o = read([placed([(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)], 3, 3, 2.0)])
+    plain_i = read([[(5.0, 4.0), (5.0, 6.0)]])
+    lifted_f = read([[(1, 1), (1, 3), (2.2, 3)], [(1, 2), (1.9, 2)]])     # two lines of ink
+    assert (square_o.letter, square_o.best.fit) == ('O', 0.0)
+    assert (plain_i.letter, plain_i.best.fit) == ('I', 0.0)
+    assert lifted_f.letter == 'F' and lifted_f.best.fit < 1e-9
+
+
 def _spiral():
     return [(5 + t / 20 * math.cos(t), 5 + t / 20 * math.sin(t)) for t in
             [i * 0.1 for i in range(400)]]
