@@ -40,7 +40,7 @@ CONCLUSIONS = {
     'c14_lars': ('L', 'L', 'pass', 'every criterion met'),     # a pause of 3 s between strokes
     'c15_carmen': ('C', 'C', 'pass', 'a turtle moved without the trigger'),    # draws at launch
     'c16_noah': ('N', 'N', 'pass', 'no launch file: the grader started its executables '
-                                   '(n_controller.py, talker.py)'),
+                                   '(keyboard.py, n_controller.py)'),
     'c17_ivan': ('I', 'I', 'pass', 'every criterion met'),     # launch files included, one I
     'c18_theo': ('T', 'T', 'pass', 'every criterion met'),     # his own turtle, turtle1 killed
     'c19_farah': ('F', 'F', 'pass', 'every criterion met'),    # the pen lifted to travel
