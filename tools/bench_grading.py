@@ -13,6 +13,10 @@
   of the bench's own, as Gradescope's container would hold it): the
   seconds to build and launch, the steps it wraps; and the sandbox made,
   used once and removed.
+- The cost of owning the world: the grader's roscore and simulator for one
+  student started (to the simulator's first turtle), then their CPU (% of
+  a core) and memory over WORLD_WATCH s with the turtle standing, as while
+  a package builds its nodes or waits for the key.
 """
 import csv
 import json
@@ -149,7 +153,44 @@ def sandbox_cost(reps=3):
         with Sandbox() as box:
             subprocess.run(box.inside(['true'], {}), check=True)
         made.append(time.monotonic() - started)
-    return dict(times, made_s=statistics.median(made))
+    return dict(times, made_s=statistics.median(made), world=[world_cost() for _ in range(reps)])
+
+
+WORLD_WATCH = 10.0      # s the grader's world is watched idle
+
+
+def _user_usage(user):
+    """(CPU s, resident MiB) of every process of `user`."""
+    cpu = memory = 0.0
+    for pid in filter(str.isdigit, os.listdir('/proc')):
+        try:
+            if os.stat(f'/proc/{pid}').st_uid != user:
+                continue
+            with open(f'/proc/{pid}/stat') as f:
+                fields = f.read().rsplit(')', 1)[1].split()
+            cpu += (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+            memory += int(fields[21]) * os.sysconf('SC_PAGE_SIZE') / 2 ** 20
+        except (OSError, ValueError, IndexError):
+            continue
+    return cpu, memory
+
+
+def world_cost():
+    """One student's world: seconds to start it, then its idle CPU and memory."""
+    from turtle_letters.gradebook.sandbox import Sandbox
+    from turtle_letters.gradebook.world import World
+    with Sandbox() as box:
+        world = World(box)
+        try:
+            started = time.monotonic()
+            world.start()
+            up = time.monotonic() - started
+            before = _user_usage(box.world_user)[0]
+            time.sleep(WORLD_WATCH)
+            cpu, memory = _user_usage(box.world_user)
+        finally:
+            world.stop()
+    return dict(up_s=up, cpu_pct=100 * (cpu - before) / WORLD_WATCH, mib=memory)
 
 
 def grading_lines(results):
@@ -184,6 +225,14 @@ def grading_lines(results):
             f"{', '.join(f'{t:.1f}' for t in cost['unsandboxed'])} s: "
             f"{inside - outside:+.2f}{'!' if inside - outside > SANDBOX_TARGET_S else ''} s "
             f"(medians); made, used once and removed: {1000 * cost['made_s']:.0f} ms")
+        worlds = cost.get('world', [])
+        if worlds:
+            ups = ', '.join(f"{w['up_s']:.1f}" for w in worlds)
+            lines.append(
+                f"the grader's own world per student (roscore and the simulator): up in {ups} s; "
+                f"idle "
+                f"{statistics.median(w['cpu_pct'] for w in worlds):.1f}% of a core, "
+                f"{statistics.median(w['mib'] for w in worlds):.0f} MiB (medians)")
     lines.append(f'Grading targets: {CLASS_TARGET_MIN:g} min for 30 students on 2 cores; '
                  f'<= {OVERHEAD_TARGET_S:g} s per student beyond the drawing; the same verdict '
                  f'and letter alone and in a class, the deviation within the spread alone; the sandbox '

@@ -29,10 +29,11 @@ import traceback
 import rospkg
 
 from ..grading.files import shown
-from ..grading.recognition import read
+from ..grading.recognition import read_row
 from . import observations as seen
 from . import reports, rubric as rubrics, sandbox, session, submission
-from .roster import RosterError, Student, first_letter
+from .roster import RosterError, Student
+from .roster import expected as expected_of
 from .roster import read as read_roster
 
 GRADESCOPE = '/autograder'
@@ -47,7 +48,7 @@ def arguments(argv):
     parser.add_argument('--rubric', help='a YAML rubric over the package default')
     parser.add_argument('--one', metavar='FOLDER', help='grade one submission; exit 0 on pass')
     parser.add_argument('--name', default='', help="with --one: the cadet's name")
-    parser.add_argument('--letter', default='', help='with --one: the letter expected')
+    parser.add_argument('--letter', default='', help='with --one: the letter (or letters) expected')
     parser.add_argument('--no-sandbox', dest='isolated', action='store_false',
                         help='run each submission unisolated, where the machine is a sandbox '
                              "already (Gradescope's container); a master port each, no more")
@@ -129,21 +130,21 @@ def facts_of(student, rubric, place):
     """Run the student's submission and say what happened: (facts, run,
     what of the submission was left out)."""
     if student.folder is None:
-        return rubrics.Facts(student.expected, 'no submission', *[None] * 6), None, []
+        return rubrics.Facts(student.expected, 'no submission', *[None] * 5, []), None, []
     package = submission.find(student.folder)
     if package.problem:
-        return rubrics.Facts(student.expected, package.problem, *[None] * 6), None, package.notes
+        return rubrics.Facts(student.expected, package.problem, *[None] * 5, []), None, package.notes
     with place.sandbox() as box:
         run = session.run(package, rubric.limits, box)
     if box.stopped:
         raise Stopped()
-    drawing = reading = None
+    drawing, readings = None, []
     if run.trigger is not None:
         drawing = seen.drawing(run.record, run.events, run.since, rubric.limits.settle,
                                run.finished)
-        reading = read(drawing.strokes) if drawing.strokes else None
+        readings = read_row(drawing.strokes, len(student.expected)) if drawing.strokes else []
     facts = rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
-                          drawing, reading, run.stuck, run.limit, seen.own_triggers(run.events),
+                          drawing, readings, run.stuck, run.limit, seen.own_triggers(run.events),
                           seen.chatter_peak(run.events), run.broken)
     return facts, run, package.notes
 
@@ -164,7 +165,7 @@ def facts_or_failure(student, rubric, place):
 def failed(student, error):
     """The facts of a submission the grader itself failed on."""
     problem = f'the grader failed on this submission: {type(error).__name__}: {error}'
-    return rubrics.Facts(student.expected, shown(problem), *[None] * 6)
+    return rubrics.Facts(student.expected, shown(problem), *[None] * 5, [])
 
 
 def grade_student(student: Student, rubric, out, place, warning=''):
@@ -181,7 +182,7 @@ def grade_student(student: Student, rubric, out, place, warning=''):
             place.current.remove(student.id)
     warning = '; '.join(filter(None, [warning] + notes))
     graded = rubrics.grade(facts, rubric)
-    drawn = (facts.reading.letter or '') if facts.reading else ''
+    drawn = rubrics.drawn(facts.readings)
     board = leaderboard(facts, run)
     row = reports.Row(student.id, student.name, student.expected, drawn, graded,
                       time.monotonic() - started, board, None, warning)
@@ -202,25 +203,26 @@ def leaderboard(facts, run):
              ('cmd_vel rate (/s)', round(d.commands / max(d.seconds, 1e-6), 1), 'asc')]
     if run and run.cpu_pct is not None:
         board.append(('controller CPU (%)', round(run.cpu_pct, 1), 'asc'))
-    if facts.reading and facts.reading.best:
-        board.append(('worst deviation (% of height)', round(100 * facts.reading.best.fit, 2),
+    fits = [r.best.fit for r in facts.readings if r.best is not None]
+    if fits:
+        board.append(('worst deviation (% of height)', round(100 * max(fits), 2),
                       'asc'))
     return board
 
 
 def draw_picture(out, row, facts):
-    """OUT/ID/drawing.png: the path over the letter read from it (Qt: main thread only)."""
-    reading = facts.reading
-    if reading is None or reading.best is None:
+    """OUT/ID/drawing.png: the ink over the letters read from it (Qt: main thread only)."""
+    fits = [r.best for r in facts.readings if r.best is not None]
+    if not fits:
         return row
     from ..grading.picture import draw
     path = os.path.join(reports.folder(out, row.id), 'drawing.png')
-    height = max(y for s in reading.best.strokes for _, y in s) - \
-        min(y for s in reading.best.strokes for _, y in s)
-    half_box = round(min(0.5, max(0.02, 1.5 * reading.best.fit * height)), 2)
-    label = f'{row.id}: {reading.best.letter}, {100 * reading.best.fit:.1f}% off'
-    draw(path, reading.best.strokes, {label: facts.drawing.strokes}, {label: (178, 24, 43)},
-         half_box)
+    strokes = [s for fit in fits for s in fit.strokes]
+    worst = max(fits, key=lambda fit: fit.fit)
+    height = max(y for s in worst.strokes for _, y in s) - min(y for s in worst.strokes for _, y in s)
+    half_box = round(min(0.5, max(0.02, 1.5 * worst.fit * height)), 2)
+    label = f'{row.id}: {rubrics.drawn(facts.readings)}, {100 * worst.fit:.1f}% off'
+    draw(path, strokes, {label: facts.drawing.strokes}, {label: (178, 24, 43)}, half_box)
     return row._replace(picture=os.path.relpath(path, out))
 
 
@@ -366,7 +368,7 @@ EXIT = {'': 0, 'SIGINT': 130, 'SIGTERM': 143}
 
 def grade_class(args, rubric):
     try:
-        students, warnings = read_roster(args.roster, args.submissions)
+        students, warnings = read_roster(args.roster, args.submissions, rubric.expected)
     except RosterError as e:
         print(f'grade_class.py: {e}', file=sys.stderr)
         return 2
@@ -390,9 +392,21 @@ def grade_class(args, rubric):
     return EXIT[stopped]
 
 
+def wanted(name, letter, rubric):
+    """What the student is to draw (--letter, else the rubric's `expected`
+    of the name); None, said, when --letter is no text of A-Z."""
+    try:
+        return expected_of(name, letter, rubric.expected)
+    except ValueError as e:
+        print(f'grade_class.py: --letter: {e}', file=sys.stderr)
+        return None
+
+
 def grade_one(args, rubric):
     folder = os.path.abspath(args.one)
-    expected = args.letter.upper() or first_letter(args.name)
+    expected = wanted(args.name, args.letter, rubric)
+    if expected is None:
+        return 2
     student = Student(os.path.basename(folder.rstrip('/')), args.name, expected, folder)
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
@@ -416,7 +430,9 @@ def grade_gradescope(args, rubric):
     except (OSError, ValueError, AttributeError) as e:
         print(f'grade_class.py: {root}/submission_metadata.json: {e}', file=sys.stderr)
         return 2
-    expected = args.letter.upper() or first_letter(name)
+    expected = wanted(name, args.letter, rubric)
+    if expected is None:
+        return 2
     student = Student('submission', name, expected, os.path.join(root, 'submission'))
     out = tempfile.mkdtemp(prefix='turtle_letters_gradescope_')
     try:

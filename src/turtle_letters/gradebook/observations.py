@@ -32,6 +32,8 @@ class Drawing(NamedTuple):
     wiped: List[tuple] = []     # (s into the drawing, 'clear' or 'reset')
     turtles: List[str] = []     # the turtles that moved, in the order they first did
     pen_lifts: int = 0          # set_pen calls that lifted a pen
+    pens: int = 0               # set_pen calls, from the launch on
+    spawns: int = 0             # turtles spawned or killed, from the launch on
 
     @property
     def seconds(self):
@@ -103,7 +105,8 @@ def _end(record, first, settle, until):
 
 
 def drawing(record, events, since, settle, until=math.inf) -> Drawing:
-    """The drawing that begins with the first move at or after `since`."""
+    """The drawing that begins with the first move at or after `since`
+    (the record's first line is the simulator's own turtle1)."""
     first = next(iter(moves(record, since, until)), None)
     if first is None:
         return Drawing([], None, None, 0, impostors(events))
@@ -120,7 +123,9 @@ def drawing(record, events, since, settle, until=math.inf) -> Drawing:
     return Drawing(strokes(driven), first['t'], ended, commands, impostors(events),
                    len(jumps), sum(1 for e in jumps if e['ink']),
                    [e for e in during if e['k'] in MOVES][-1]['t'],
-                   wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']))
+                   wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
+                   sum(1 for e in record[1:] if e['k'] == 'pen'),
+                   sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')))
 
 
 def last_graph(events):

@@ -1,5 +1,9 @@
 """The class: the roster (id,name and an optional letter) against the
-submissions folder (one folder per student, named by their id). No ROS here."""
+submissions folder (one folder per student, named by their id). No ROS here.
+
+What a student is expected to draw: the roster's letter column when it is
+given (one letter, or a text such as initials), else what the rubric's
+`expected` says of their name: its first letter (the lab's) or its initials."""
 import csv
 import os
 import string
@@ -11,10 +15,14 @@ class RosterError(ValueError):
     """A roster that cannot be read; the message says why."""
 
 
+MAX_TEXT = 8        # letters a student may be asked to draw
+EXPECTED = ('first', 'initials')
+
+
 class Student(NamedTuple):
     id: str
     name: str
-    expected: str           # the letter they should draw ('' when no one can say)
+    expected: str           # the letters they should draw, left to right ('' when no one can say)
     folder: Optional[str]   # their submission, or None
 
 
@@ -26,14 +34,29 @@ def first_letter(name):
     return plain if plain in string.ascii_uppercase and plain else ''
 
 
-def _expected(row, where):
-    given = (row.get('letter') or '').strip().upper()
-    if given and (len(given) != 1 or given not in string.ascii_uppercase):
-        raise RosterError(f'{where}: letter {given!r} is not one letter of A-Z')
-    return given or first_letter(row['name'])
+def initials(name):
+    """The first letter of each word of `name` ('Anna-Lena de Vries' gives ALDV)."""
+    return ''.join(first_letter(word) for word in name.replace('-', ' ').split())
 
 
-def read(roster_path, submissions) -> Tuple[List[Student], List[str]]:
+def expected(name, given='', mode='first'):
+    """What a student is to draw: `given` (checked), else `mode` of their name."""
+    given = given.strip().upper()
+    if given:
+        if len(given) > MAX_TEXT or not set(given) <= set(string.ascii_uppercase):
+            raise ValueError(f'letter {given!r} is not 1 to {MAX_TEXT} letters of A-Z')
+        return given
+    return initials(name) if mode == 'initials' else first_letter(name)
+
+
+def _expected(row, where, mode):
+    try:
+        return expected(row['name'] or '', row.get('letter') or '', mode)
+    except ValueError as e:
+        raise RosterError(f'{where}: {e}') from None
+
+
+def read(roster_path, submissions, mode='first') -> Tuple[List[Student], List[str]]:
     """The students in roster order, then folders the roster lacks; and warnings."""
     try:
         with open(roster_path, newline='', encoding='utf-8-sig') as f:
@@ -63,11 +86,11 @@ def read(roster_path, submissions) -> Tuple[List[Student], List[str]]:
         seen.add(sid)
         folder = os.path.join(submissions, sid) if sid in folders else None
         name = (row['name'] or '').strip()
-        expected = _expected(row, f'{roster_path}, line {number}')
-        if not expected:
+        wanted = _expected(row, f'{roster_path}, line {number}', mode)
+        if not wanted:
             warnings.append(f'{sid}: the name {name!r} starts with no letter of A-Z: give the '
                             f'letter in the roster\'s letter column')
-        students.append(Student(sid, name, expected, folder))
+        students.append(Student(sid, name, wanted, folder))
     for extra in folders:
         if extra not in seen:
             warnings.append(f'{extra}: a submission the roster lacks: graded, with no name '

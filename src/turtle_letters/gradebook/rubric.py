@@ -8,6 +8,7 @@ import yaml
 from ..grading.files import shown
 from ..grading.recognition import Reading
 from .observations import Drawing
+from .roster import EXPECTED
 
 LIMITS = ('build', 'launch', 'stand', 'talker', 'start', 'drawing', 'settle')
 CHATTER_FLOOD = 100     # messages a second on /chatter past which the talker floods it
@@ -29,7 +30,12 @@ class Limits(NamedTuple):
     settle: float
 
 
+ALLOWED = ('teleport', 'spawn', 'set_pen')
+
+
 class Rubric(NamedTuple):
+    expected: str                   # what a name asks for, without a letter in the roster
+    allowed: Dict[str, bool]        # of ALLOWED: what a drawing may use besides cmd_vel
     pass_score: float
     required: List[str]             # criteria a pass needs every point of
     points: Dict[str, float]        # criterion: points, in order
@@ -47,7 +53,7 @@ class Facts(NamedTuple):
     waited: object
     talker: object
     drawing: Optional[Drawing]
-    reading: Optional[Reading]
+    readings: List[Reading]         # the letters drawn, left to right ([]: no ink)
     stuck: str = ''                 # why the turtle never moved after the trigger, if known
     limit: str = ''                 # the sandbox's limit it reached, in words ('' if none)
     own_triggers: List[str] = []    # its nodes that drive the turtle and published "P" too
@@ -110,8 +116,15 @@ def load(default_path, override_path=None) -> Rubric:
     if not isinstance(required, list) or not set(required) <= set(points):
         raise RubricError(f'required: {required!r} is not a list of criteria '
                           f'({", ".join(points)})')
-    return Rubric(_number(data['pass_score'], 'pass_score'), required, points, full, none,
-                  limits)
+    if data.get('expected') not in EXPECTED:
+        raise RubricError(f'expected: {data.get("expected")!r} is not one of {", ".join(EXPECTED)}')
+    allowed = data.get('allowed')
+    if not isinstance(allowed, dict) or set(allowed) != set(ALLOWED) or \
+            not all(isinstance(v, bool) for v in allowed.values()):
+        raise RubricError(f'allowed: {allowed!r} is not true or false for each of '
+                          f'{", ".join(ALLOWED)}')
+    return Rubric(data['expected'], allowed, _number(data['pass_score'], 'pass_score'), required, points,
+                  full, none, limits)
 
 
 def _step(step, before):
@@ -141,35 +154,54 @@ def _wiped(facts, what):
             f'the drawing' + (f' ({len(when)} times)' if len(when) > 1 else ''))
 
 
+def drawn(readings):
+    """The letters read, left to right ('?' for ink no letter fits)."""
+    return ''.join(r.letter or '?' for r in readings if r.best is not None)
+
+
+def _right(facts):
+    """(reading, letter) of each expected letter drawn in its place."""
+    return [(r, e) for r, e in zip(facts.readings, facts.expected) if r.letter == e]
+
+
 def _letter(facts, _):
     if facts.broken:
         return 0.0, f'{facts.broken}: nothing drawn is credited'
     cleared = _wiped(facts, 'clear')
     if cleared:
         return 0.0, f'{cleared}: the letter on its canvas is not whole'
-    reading = facts.reading
-    if reading is None or reading.best is None:
+    read = [r for r in facts.readings if r.best is not None]
+    if not read:
         teleported = facts.drawing.jump_ink if facts.drawing else 0
         return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '
                      f'laid all there is' if teleported else 'nothing was drawn')
-    if reading.letter is None:
-        return 0.0, (f'no letter reads from the path (closest: {reading.best.letter}, '
-                     f'{100 * reading.best.fit:.0f}% of its height off)')
+    if len(read) == 1 and read[0].letter is None:
+        return 0.0, (f'no letter reads from the path (closest: {read[0].best.letter}, '
+                     f'{100 * read[0].best.fit:.0f}% of its height off)')
+    text = drawn(read)
     if not facts.expected:
-        return 0.0, (f'drew {reading.letter}, but no letter is expected: give it in the '
-                     f'roster (its letter column, or a name)')
-    if reading.letter != facts.expected:
-        return 0.0, f'drew {reading.letter}, expected {facts.expected}'
-    return 1.0, f'drew {reading.letter}, as expected'
+        return 0.0, (f'drew {text}, but no letter is expected: give it in the roster (its '
+                     f'letter column, or a name)')
+    right = len(_right(facts))
+    if text == facts.expected:
+        return 1.0, f'drew {text}, as expected'
+    wrong = f'drew {text}, expected {facts.expected}'
+    if len(facts.expected) == 1:
+        return 0.0, wrong
+    return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place'
 
 
 def _accuracy(facts, rubric):
-    if _letter(facts, rubric)[0] < 1:
+    right = _right(facts) if _letter(facts, rubric)[0] > 0 else []
+    if not right:
         return 0.0, f'not scored: {_letter(facts, rubric)[1]}'
-    fit = facts.reading.fits[facts.expected].fit
-    share = min(1.0, max(0.0, (rubric.none - fit) / (rubric.none - rubric.full)))
-    return share, (f'worst deviation {100 * fit:.1f}% of the letter\'s height (every point at '
-                   f'{100 * rubric.full:g}% or less, none from {100 * rubric.none:g}%)')
+    fits = [r.fits[e].fit for r, e in right]
+    shares = [min(1.0, max(0.0, (rubric.none - fit) / (rubric.none - rubric.full))) for fit in fits]
+    share = sum(shares) / max(len(facts.readings), len(facts.expected))
+    tilts = sorted({r.fits[e].tilt for r, e in right} - {0.0}, key=abs)
+    tilted = f', drawn {abs(tilts[-1]):g} degrees off level' if tilts else ''
+    return share, (f'worst deviation {100 * max(fits):.1f}% of the letter\'s height (every point '
+                   f'at {100 * rubric.full:g}% or less, none from {100 * rubric.none:g}%){tilted}')
 
 
 def _ends(facts, rubric):
@@ -185,7 +217,16 @@ def _ends(facts, rubric):
     return 1.0, f'ended after {d.seconds:.1f} s, the turtle standing still'
 
 
-def _driven(facts, _):
+def _not_allowed(d, allowed):
+    """What the drawing used that the rubric does not allow, in words, or ''."""
+    used = [(d.jumps, 'teleport', 'teleported'), (d.spawns, 'spawn', 'spawned or killed'),
+            (d.pens, 'set_pen', 'called set_pen')]
+    said = [f'{words} {_counted(n, "time")}' for n, name, words in used
+            if n and not allowed[name]]
+    return f'{", ".join(said)}: the rubric does not allow it' if said else ''
+
+
+def _driven(facts, rubric):
     d = facts.drawing
     if facts.broken:
         return 0.0, facts.broken
@@ -197,6 +238,8 @@ def _driven(facts, _):
     reset = _wiped(facts, 'reset')
     if reset:
         return 0.0, f'{reset}: the turtle was put back, not driven'
+    if _not_allowed(d, rubric.allowed):
+        return 0.0, _not_allowed(d, rubric.allowed)
     if d.jump_ink:
         return 0.0, (f'{d.jump_ink} teleport{"s" if d.jump_ink > 1 else ""} with the pen down '
                      f'laid ink: ink is credited only where a turtle was driven')

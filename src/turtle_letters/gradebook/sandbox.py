@@ -139,12 +139,17 @@ def problem():
     return None
 
 
-def kill_user(user):
-    """Kills every process of `user` (a submission's, outside a sandbox:
-    double forks and setsid included, as no process of it can change user)."""
+def _all_pids():
+    return filter(str.isdigit, os.listdir('/proc'))
+
+
+def kill_user(user, pids=_all_pids):
+    """Kills every process of `user` among `pids()` (a submission's outside
+    a sandbox, or a world's: double forks and setsid included, as no process
+    of it can change user)."""
     for _ in range(100):
         left = []
-        for pid in filter(str.isdigit, os.listdir('/proc')):
+        for pid in pids():
             try:
                 if os.stat(f'/proc/{pid}').st_uid == user:
                     os.kill(int(pid), signal.SIGKILL)
@@ -386,10 +391,20 @@ class Sandbox:
         if self.runs_as_its_user():
             _run(['chown', '-R', '-h', f'{self.user}:{self.user}', self.work])
 
+    def kill_world(self):
+        """Kills its world's processes (world.py): those in its namespace, as
+        another grader's sandbox of the same slot has the same world user."""
+        if not self.isolated:
+            kill_user(self.world_user)
+            return
+        kill_user(self.world_user, lambda: subprocess.run(
+            ['ip', 'netns', 'pids', self.namespace], stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL, universal_newlines=True).stdout.split())
+
     def __exit__(self, *_):
         if self.cgroup is not None:
             self.cgroup.remove()
-        kill_user(self.world_user)
+        self.kill_world()
         if not self.isolated and self.runs_as_its_user():     # no PID namespace: by its user
             kill_user(self.user)
         if self.isolated:
@@ -415,7 +430,7 @@ class Sandbox:
                 pass
         if self.cgroup is not None:
             self.cgroup.kill()
-        kill_user(self.world_user)
+        self.kill_world()
         if not self.isolated and self.runs_as_its_user():
             kill_user(self.user)
 

@@ -17,7 +17,7 @@ import subprocess
 import threading
 import time
 
-from .sandbox import as_user, kill_user
+from .sandbox import as_user
 
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
 MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
@@ -144,15 +144,15 @@ class World:
 
     def stop(self):
         """Ends both, and what roscore started (roslaunch gives each node a
-        session of its own: only their user finds them all); the record
-        read to its end."""
+        session of its own: only their user, in the sandbox's namespace,
+        finds them all); the record read to its end."""
         for process in (self.simulator, self.master):
             if process is not None and process.poll() is None:
                 try:
                     os.killpg(process.pid, signal.SIGKILL)
                 except OSError:
                     pass
-        kill_user(self.user)
+        self.box.kill_world()
         for process in (self.simulator, self.master):
             if process is not None:
                 process.wait()

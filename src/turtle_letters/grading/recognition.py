@@ -18,6 +18,9 @@ from typing import Dict, List, NamedTuple, Optional, Tuple
 from ..letters.font import FONT
 
 Point = Tuple[float, float]
+LEVEL = 0.03        # a fit this good level is not tried tilted
+TILTS = (-15, -10, -5, 5, 10, 15)   # degrees a letter is tried off level
+GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
 SAMPLE = 0.02       # share of the height between compared points
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
@@ -57,6 +60,7 @@ class Fit(NamedTuple):
     letter: str
     fit: float                  # the worst deviation, as a share of the path's height
     strokes: List[List[Point]]  # the candidate on the path's box, m
+    tilt: float = 0.0           # degrees counter-clockwise the ink lies off level
 
 
 class Reading(NamedTuple):
@@ -112,11 +116,9 @@ def farthest(points, others, enough=math.inf):
     return math.sqrt(worst)
 
 
-def read(ink, letters=string.ascii_uppercase) -> Reading:
-    """The letter of `letters` that `ink` (lines of (x, y), m) draws, best fit first."""
+def _fits(ink, letters):
+    """Each letter's best fit to `ink`, as it lies."""
     points = [p for line in ink for p in line]
-    if len(points) < 2 or box(points)[3] <= 0:
-        return Reading(None, None, {})
     path_box = box(points)
     height = path_box[3]
     drawn = samples([line for line in ink if line], SAMPLE * height)
@@ -131,6 +133,61 @@ def read(ink, letters=string.ascii_uppercase) -> Reading:
             away = max(away, farthest(samples(shape, SAMPLE * height), drawn, bound))
         if away / height < (fits[letter].fit if letter in fits else math.inf):
             fits[letter] = Fit(letter, away / height, shape)
+    return fits
+
+
+def turned(lines, degrees, centre):
+    """`lines` turned by `degrees` counter-clockwise about `centre`."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return [[(centre[0] + (x - centre[0]) * c - (y - centre[1]) * s,
+              centre[1] + (x - centre[0]) * s + (y - centre[1]) * c) for x, y in line]
+            for line in lines]
+
+
+def read(ink, letters=string.ascii_uppercase) -> Reading:
+    """The letter of `letters` that `ink` (lines of (x, y), m) draws, best
+    fit first; ink that fits no letter well level is tried turned back by
+    each of TILTS, and its fits keep the tilt (their strokes turned with it)."""
+    points = [p for line in ink for p in line]
+    if len(points) < 2 or box(points)[3] <= 0:
+        return Reading(None, None, {})
+    fits = _fits(ink, letters)
+    if min(f.fit for f in fits.values()) > LEVEL:
+        x, y, w, h = box(points)
+        centre = (x + w / 2, y + h / 2)
+        for tilt in TILTS:
+            level = [line for line in turned(ink, -tilt, centre)]
+            if box([p for line in level for p in line])[3] <= 0:
+                continue
+            for letter, fit in _fits(level, letters).items():
+                if fit.fit < fits[letter].fit:
+                    fits[letter] = Fit(letter, fit.fit, turned(fit.strokes, tilt, centre), tilt)
     best = min(fits.values(), key=lambda f: f.fit, default=None)
     letter = best.letter if best is not None and best.fit <= READABLE else None
     return Reading(letter, best, fits)
+
+
+def apart(ink):
+    """The ink's letters, left to right: lines whose spans across overlap,
+    or lie less than GAP of the row's height apart, are one letter's."""
+    lines = sorted((line for line in ink if line), key=lambda line: min(p[0] for p in line))
+    if not lines:
+        return []
+    height = box([p for line in lines for p in line])[3]
+    groups = []         # [lines, right edge]
+    for line in lines:
+        left, right = min(p[0] for p in line), max(p[0] for p in line)
+        if groups and left <= groups[-1][1] + GAP * height:
+            groups[-1][0].append(line)
+            groups[-1][1] = max(groups[-1][1], right)
+        else:
+            groups.append([[line], right])
+    return [group for group, _ in groups]
+
+
+def read_row(ink, count=1) -> List[Reading]:
+    """The letters `ink` draws, left to right: the whole read as one when
+    one letter is expected, else each letter set apart by GAP read alone."""
+    if count <= 1:
+        return [read(ink)]
+    return [read(group) for group in apart(ink)]

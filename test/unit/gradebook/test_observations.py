@@ -129,3 +129,11 @@ def test_the_drawing_ends_when_the_turtles_stood_still_long_enough_and_not_befor
     assert drawing(record, [graph()], 0.5, 2.0, until=end + 2.0).ended == end
     paused = record + line(end + 1.5, 6.0, 7.0)
     assert drawing(paused, [graph()], 0.5, 2.0, until=20.0).ended == paused[-1]['t']
+
+
+def test_spawns_kills_and_pens_count_from_the_launch_but_the_simulators_own_turtle1():
+    record = [dict(k='spawn', t=0.0, turtle='turtle1'), dict(k='kill', t=0.5, turtle='turtle1'),
+              dict(k='spawn', t=0.6, turtle='theo'), dict(k='pen', t=0.7, turtle='theo', off=True),
+              dict(k='pen', t=1.5, turtle='theo', off=True)] + line(2, 4.0, 5.0, turtle='theo')
+    d = drawing(record, [graph()], since=1.0, settle=2.0, until=9.0)
+    assert (d.spawns, d.pens, d.pen_lifts, d.turtles) == (2, 2, 0, ['theo'])

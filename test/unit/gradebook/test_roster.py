@@ -1,7 +1,7 @@
 """The roster against the submissions folder."""
 import pytest
 
-from turtle_letters.gradebook.roster import RosterError, first_letter, read
+from turtle_letters.gradebook.roster import RosterError, expected, first_letter, read
 
 
 def setup_class(tmp_path, roster_text, folders):
@@ -26,7 +26,8 @@ def test_roster_order_the_expected_letter_and_the_folders_it_lacks(tmp_path):
     ('student,name\na,b\n', 'header with id,name'),
     ('id,name\n', 'header with id,name'),
     ('id,name\na,Ann\na,Bob\n', "id 'a' given twice"),
-    ('id,name,letter\na,Ann,AB\n', "letter 'AB' is not one letter"),
+    ('id,name,letter\na,Ann,A B\n', "letter 'A B' is not 1 to 8 letters of A-Z"),
+    ('id,name,letter\na,Ann,ABCDEFGHI\n', "letter 'ABCDEFGHI' is not 1 to 8 letters"),
     ('id,name,letter\na,Ann,A\nb\n', r'line 3: 1 fields, where the header has 3 \(id,name,letter\)'),
     ('id,name\na,Ann,A,x\n', 'line 2: 4 fields, where the header has 2'),
 ])
@@ -44,3 +45,11 @@ def test_a_missing_roster(tmp_path):
 def test_first_letters():
     assert [first_letter(n) for n in ('nadia', ' Øystein', '3 Zoë', '李', '')] == \
         ['N', '', 'Z', '', '']
+
+
+def test_a_text_in_the_roster_or_the_initials_of_the_name(tmp_path):
+    roster, subs = setup_class(tmp_path, 'id,name,letter\na,Anna-Lena de Vries,\nb,Bo Li,jd\n',
+                               [])
+    assert [s.expected for s in read(roster, subs)[0]] == ['A', 'JD']
+    assert [s.expected for s in read(roster, subs, 'initials')[0]] == ['ALDV', 'JD']
+    assert expected(' Émile  Zola ', mode='initials') == 'EZ'

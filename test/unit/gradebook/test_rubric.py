@@ -7,7 +7,7 @@ import pytest
 from turtle_letters.gradebook.observations import Drawing
 from turtle_letters.gradebook.rubric import CRITERIA, Facts, RubricError, grade, load
 from turtle_letters.gradebook.session import Step
-from turtle_letters.grading.recognition import read
+from turtle_letters.grading.recognition import read_row
 
 DEFAULT = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'config', 'rubric.yaml')
 L_PATH = [(1.0, 3.0), (1.0, 1.0), (2.2, 1.0)]
@@ -19,7 +19,8 @@ def facts(drawing=None, expected='L', **steps):
     given = dict(build=OK, launch=OK, waited=OK, talker=OK)
     given.update(steps)
     return Facts(expected, '', given['build'], given['launch'], given['waited'],
-                 given['talker'], drawing, read(drawing.strokes) if drawing.strokes else None)
+                 given['talker'], drawing,
+                 read_row(drawing.strokes, len(expected)) if drawing.strokes else [])
 
 
 def scores_of(graded):
@@ -68,7 +69,7 @@ def test_each_step_that_failed_costs_its_points_and_says_why():
 
 def test_a_failed_build_reaches_nothing_else():
     graded = grade(Facts('L', '', Step(False, 'catkin_make failed: x'), None, None, None, None,
-                         None), load(DEFAULT))
+                         []), load(DEFAULT))
     assert graded.score == 0 and graded.verdict == 'fail'
     assert scores_of(graded)['It launches'] == (0, 'not tried: the build failed')
 
@@ -145,6 +146,43 @@ def test_a_required_criterion_failed_fails_whatever_the_score():
     assert jumped.reason.startswith('The turtle was driven over cmd_vel: 1 teleport with the pen')
 
 
+def test_expected_is_the_first_letter_or_the_initials(tmp_path):
+    assert load(DEFAULT).expected == 'first'
+    assert load(DEFAULT, write(tmp_path, 'expected: initials\n')).expected == 'initials'
+    with pytest.raises(RubricError, match="expected: 'middle' is not one of first, initials"):
+        load(DEFAULT, write(tmp_path, 'expected: middle\n'))
+
+
 def test_required_names_only_criteria(tmp_path):
     with pytest.raises(RubricError, match='required'):
         load(DEFAULT, write(tmp_path, 'required: [colour]\n'))
+
+
+def test_initials_earn_each_letter_in_its_place():
+    a = [(1.0, 1.0), (1.6, 3.0), (2.2, 1.0)], [(1.2, 1.7), (2.0, 1.7)]
+    l_beside = [[(x + 2.0, y) for x, y in L_PATH]]
+    row = [*a, *l_beside]
+    both = scores_of(grade(facts(Drawing(row, 1.0, 5.0, 90, []), expected='AL'), load(DEFAULT)))
+    half = scores_of(grade(facts(Drawing(row, 1.0, 5.0, 90, []), expected='AT'), load(DEFAULT)))
+    letter, accuracy = 'The letter drawn is the expected one', 'Its accuracy'
+    assert both[letter] == (25, 'drew AL, as expected') and both[accuracy][0] > 19
+    assert half[letter] == (12.5, 'drew AL, expected AT: 1 in place')
+    assert 9 < half[accuracy][0] <= 10
+
+
+def test_a_tilted_letter_is_read_and_its_tilt_said():
+    from turtle_letters.grading.recognition import turned
+    tilted = turned([L_PATH], 10, (1.5, 2.0))
+    said = scores_of(grade(facts(Drawing(tilted, 1.0, 5.0, 90, [])), load(DEFAULT)))
+    assert said['The letter drawn is the expected one'] == (25, 'drew L, as expected')
+    assert said['Its accuracy'][1].endswith(', drawn 10 degrees off level')
+
+
+def test_what_a_drawing_may_use_besides_cmd_vel_is_the_rubrics(tmp_path):
+    used = Drawing([L_PATH], 1.0, 5.0, 90, [], jumps=2, pens=3, spawns=2)
+    strict = load(DEFAULT, write(tmp_path, 'allowed: {teleport: false, set_pen: false}\n'))
+    assert scores_of(grade(facts(used), load(DEFAULT)))['The turtle was driven over cmd_vel'][0] == 10
+    assert scores_of(grade(facts(used), strict))['The turtle was driven over cmd_vel'] == (
+        0, 'teleported 2 times, called set_pen 3 times: the rubric does not allow it')
+    with pytest.raises(RubricError, match='allowed: .* true or false for each of teleport'):
+        load(DEFAULT, write(tmp_path, 'allowed: {teleport: 1}\n'))

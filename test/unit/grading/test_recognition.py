@@ -7,7 +7,7 @@ import string
 
 import pytest
 
-from turtle_letters.grading.recognition import READABLE, read
+from turtle_letters.grading.recognition import READABLE, apart, read, read_row, turned
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import placed, retraced, rounded
@@ -86,3 +86,23 @@ def test_paths_that_are_no_letter(path):
     reading = read([path])
     assert reading.letter is None
     assert reading.best is None or reading.best.fit > READABLE
+
+
+def test_a_row_of_letters_is_read_left_to_right_by_the_space_between_them():
+    j = [(1.6, 3.0), (1.6, 1.0), (1.0, 1.0), (1.0, 1.6)]
+    d = [(2.0, 1.0), (2.0, 3.0), (2.5, 3.0), (2.9, 2.6), (2.9, 1.4), (2.5, 1.0), (2.0, 1.0)]
+    f = [[(3.3, 1.0), (3.3, 3.0), (4.3, 3.0)], [(3.3, 2.0), (4.0, 2.0)]]
+    ink = [f[1], d, j, f[0]]                      # drawn in any order
+    assert [len(group) for group in apart(ink)] == [1, 1, 2]
+    assert [r.letter for r in read_row(ink, 3)] == ['J', 'D', 'F']
+    assert len(read_row(ink, 1)) == 1             # one letter expected: the ink read whole
+
+
+@pytest.mark.parametrize('tilt', [-15, -8, 12])
+def test_a_letter_drawn_up_to_15_degrees_off_level_still_reads(tilt):
+    for letter in 'FKN':
+        ink = turned([placed(rounded(retraced(FONT[letter].strokes), 0.03), 2, 2, 2.0)], tilt,
+                     (3, 3))
+        reading = read(ink)
+        assert reading.letter == letter and reading.best.fit < 0.05, (letter, reading.best)
+        assert abs(reading.best.tilt - tilt) <= 5    # the nearest of TILTS, or one beside it
