@@ -143,6 +143,11 @@ def _all_pids():
     return filter(str.isdigit, os.listdir('/proc'))
 
 
+def _namespace_pids(namespace):
+    return subprocess.run(['ip', 'netns', 'pids', namespace], stdout=subprocess.PIPE,
+                          stderr=subprocess.DEVNULL, universal_newlines=True).stdout.split()
+
+
 def kill_user(user, pids=_all_pids):
     """Kills every process of `user` among `pids()` (a submission's outside
     a sandbox, or a world's: double forks and setsid included, as no process
@@ -394,12 +399,8 @@ class Sandbox:
     def kill_world(self):
         """Kills its world's processes (world.py): those in its namespace, as
         another grader's sandbox of the same slot has the same world user."""
-        if not self.isolated:
-            kill_user(self.world_user)
-            return
-        kill_user(self.world_user, lambda: subprocess.run(
-            ['ip', 'netns', 'pids', self.namespace], stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL, universal_newlines=True).stdout.split())
+        kill_user(self.world_user, lambda: _namespace_pids(self.namespace) if self.isolated
+                  else _all_pids())
 
     def __exit__(self, *_):
         if self.cgroup is not None:
