@@ -18,11 +18,12 @@ import actionlib
 import rospy
 import rostest
 from PyQt5.QtGui import QColor, QImage
+from geometry_msgs.msg import Twist, Vector3
 from sensor_msgs.msg import Image
 from std_msgs.msg import String
 from std_srvs.srv import Trigger
 from turtlesim.msg import Pose
-from turtlesim.srv import TeleportAbsolute
+from turtlesim.srv import SetPen, TeleportAbsolute
 
 from support.browser import browser, have_browser
 from support.nodes import NodeProcess, connections, wait_until
@@ -60,6 +61,16 @@ def near_share(pixels, others):
                                            for dx in range(-NEAR, NEAR + 1)
                                            for dy in range(-NEAR, NEAR + 1)))
     return near / max(len(pixels), 1)
+
+
+def drive(publisher, speed, seconds):
+    """Straight ahead at `speed` for `seconds`, commanded at 50 Hz, then stop."""
+    end = rospy.get_time() + seconds
+    while rospy.get_time() < end:
+        publisher.publish(Twist(linear=Vector3(speed, 0, 0)))
+        rospy.sleep(0.02)
+    publisher.publish(Twist())
+    rospy.sleep(0.2)
 
 
 @unittest.skipUnless(have_browser(), 'no chromium-driver here (make deps installs it)')
@@ -103,9 +114,9 @@ class ViewerInABrowser(unittest.TestCase):
         return viewer
 
     @classmethod
-    def serving(cls):
+    def serving(cls, url=None):
         try:
-            return urllib.request.urlopen(cls.url, timeout=1).status == 200
+            return urllib.request.urlopen(url or cls.url, timeout=1).status == 200
         except OSError:
             return False
 
@@ -144,6 +155,37 @@ class ViewerInABrowser(unittest.TestCase):
         self.assertGreater(len(simulator), 100)
         self.assertGreater(near_share(simulator, page), AGREE, 'turtlesim ink missing on the page')
         self.assertGreater(near_share(page, simulator), AGREE, 'page ink turtlesim has not')
+
+    def test_2b_fast_thin_lines_and_a_pen_up_teleport_as_turtlesim_drew_them(self):
+        """The bundled simulator says what ink it laid: a 1-px line at 2.5 m/s,
+        a 3-px one at 1 m/s, and a pen-up teleport that lands on ink and jumps
+        away (no line), each on the page as on turtlesim's own canvas."""
+        if ('/turtlesim/ink', 'std_msgs/String') not in rospy.get_published_topics():
+            self.skipTest('the real turtlesim publishes no ink; the page rebuilds from poses')
+        pen = rospy.ServiceProxy('/turtle1/set_pen', SetPen)
+        teleport = rospy.ServiceProxy('/turtle1/teleport_absolute', TeleportAbsolute)
+        cmd_vel = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=10)
+        wait_until(lambda: cmd_vel.get_num_connections() > 0, 10, 'turtlesim on cmd_vel')
+        for (x, y), rgb, width, speed in (((1.0, 1.0), (255, 0, 0), 1, 2.5),
+                                          ((1.0, 2.0), (0, 160, 0), 3, 1.0)):
+            pen(0, 0, 0, 3, 1)
+            teleport(x, y, 0.0)
+            pen(*rgb, width, 0)
+            drive(cmd_vel, speed, 3.0 / speed)
+        pen(0, 0, 0, 3, 1)
+        teleport(2.0, 1.0, 0.0)         # onto the red line
+        teleport(9.0, 9.0, 0.0)         # and away
+        rospy.sleep(1.0)
+        saved = rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)()
+        self.assertTrue(saved.success, saved.message)
+        turtle = (9.0 * 45, 499 - 9.0 * 45)
+        simulator = ink(QImage(saved.message), turtle)
+        wait_until(lambda: near_share(simulator, ink(self.page_canvas(), turtle)) > AGREE, 10,
+                   "turtlesim's ink on the page")
+        page = ink(self.page_canvas(), turtle)
+        self.assertGreater(near_share(page, simulator), AGREE, 'page ink turtlesim has not')
+        red = {(x, y) for x, y in page if 45 < x < 180 and abs(y - (499 - 45)) <= 1}
+        self.assertGreater(len(red), 120, 'the 1-px line at 2.5 m/s, whole')
 
     def test_3_each_turtle_by_name_and_each_drawing_in_the_table(self):
         self.assertEqual(self.names(), ['turtle1'])
@@ -194,6 +236,38 @@ class ViewerInABrowser(unittest.TestCase):
                            == [90.0, 364.0], 'turtle1 where it was put, on the page')
         unexpected = [e for e in self.errors() if 'WebSocket connection' not in e]
         self.assertEqual(unexpected, [])
+
+    def test_6_a_page_past_the_most_is_told_why_and_backs_off(self):
+        port = free_port()
+        crowded = NodeProcess('turtle_letters', 'view.py', f'_port:={port}', '_max_pages:=1',
+                              '__name:=crowded_view')
+        first = self.driver.current_window_handle
+        try:
+            wait_until(lambda: self.serving(f'http://127.0.0.1:{port}/'), 30,
+                       'the second viewer serving', crowded.output)
+            self.driver.switch_to.new_window('tab')
+            self.driver.get(f'http://127.0.0.1:{port}/')
+            self.wait_for_page(lambda: self.status() == 'live', 'the first page live')
+            taken = self.driver.current_window_handle
+            self.driver.switch_to.new_window('tab')
+            self.driver.get(f'http://127.0.0.1:{port}/')
+            said = []
+            wait_until(lambda: said.append(self.status()) or 'in 4 s' in said[-1], 20,
+                       'the refused page backing off to 4 s', lambda: said[-3:])
+            refusals = [s for s in said if s.startswith('refused')]
+            self.assertTrue(refusals[0].startswith('refused (the viewer shows 1 pages already): '
+                                                   'trying again in'), refusals[0])
+            self.assertNotIn('live', said)
+            refused = self.driver.current_window_handle
+            self.driver.switch_to.window(taken)
+            self.driver.close()                         # a seat frees
+            self.driver.switch_to.window(refused)
+            self.wait_for_page(lambda: self.status() == 'live', 'the refused page in, once a '
+                               'place was free', timeout=20)
+            self.driver.close()
+        finally:
+            self.driver.switch_to.window(first)
+            crowded.stop()
 
 
 if __name__ == '__main__':

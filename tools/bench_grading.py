@@ -1,7 +1,8 @@
 """`make bench`'s grading group: a class graded by grade_class.py.
 
-- A class of copies of the test class's good submissions (test/class), as
-  many students as asked (30 by default), graded with --jobs 2: minutes
+- A class of copies of the test class's submissions of every shape
+  (MODELS), as many students as asked (30 by default), graded with
+  --jobs 2: minutes
   per class, each student's grading time beyond their drawing (build,
   launch, the wait before the key, the settle), and the most memory the
   grader's own process held (VmHWM).
@@ -33,8 +34,14 @@ from support.grading import container, peak_memory_kb, started_grading
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
 CLASS = os.path.join(REPO, 'test', 'class')
-MODELS = [('c01_nadia', 'Nadia Novak'), ('c02_kofi', 'Kofi Mensah'), ('c03_lena', 'Lena Ortiz'),
-          ('c04_maria', 'Maria Silva')]
+# A class of every shape: the lab's own, closed loops, a wrong letter, one
+# drawing at launch, one without a launch file, a turtle of their own, pen
+# lifts, initials and C++.
+MODELS = [('c01_nadia', 'Nadia Novak', ''), ('c02_kofi', 'Kofi Mensah', ''),
+          ('c03_lena', 'Lena Ortiz', ''), ('c04_maria', 'Maria Silva', ''),
+          ('c15_carmen', 'Carmen Diaz', ''), ('c16_noah', 'Noah Klein', ''),
+          ('c18_theo', 'Theo Jansen', ''), ('c19_farah', 'Farah Nasser', ''),
+          ('c20_jonas', 'Jonas Dahl', 'JD'), ('c21_hana', 'Hana Sato', '')]
 LAB = 'c01_nadia'
 CLASS_TARGET_MIN, OVERHEAD_TARGET_S = 15.0, 15.0    # for 30 students on 2 cores
 SANDBOX_TARGET_S = 2.0      # the most the sandbox may add to a student's grading
@@ -68,12 +75,12 @@ def class_run(students, keep, jobs=2):
     try:
         subs = os.path.join(top, 'submissions')
         with open(os.path.join(top, 'roster.csv'), 'w') as f:
-            f.write('id,name\n')
+            f.write('id,name,letter\n')
             for i in range(students):
-                model, name = MODELS[i % len(MODELS)]
+                model, name, letter = MODELS[i % len(MODELS)]
                 shutil.copytree(os.path.join(CLASS, 'submissions', model),
                                 os.path.join(subs, f's{i + 1:02}_{model}'), symlinks=True)
-                f.write(f's{i + 1:02}_{model},{name}\n')
+                f.write(f's{i + 1:02}_{model},{name},{letter}\n')
         started = time.monotonic()
         grading = started_grading(subs, '--roster', os.path.join(top, 'roster.csv'), '--out', out,
                                   '--jobs', str(jobs))

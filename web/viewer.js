@@ -1,11 +1,16 @@
 // The room, live: the shared canvas, every turtle, every drawing and the
 // scoreboard, from the viewer's WebSocket (/room). The first message, on
 // every (re)connect, is a snapshot; then each brings only what changed.
-// The page only reads: it sends nothing.
+// The page only reads: it sends nothing. A quiet room still says it is
+// there every 2 s; a page that hears nothing for STALE_MS says it is stale.
+// A page the viewer refuses (it shows as many pages as it may) says why and
+// tries again later and later, up to RETRY_MOST_MS.
 'use strict';
 
 const RETRY_FIRST_MS = 500;
 const RETRY_MOST_MS = 8000;
+const STALE_MS = 6000;
+const REFUSED = 1013;           // the viewer's close code for "try again later"
 const PEN_WIDTH = 3;            // px: turtlesim's default pen
 
 const canvas = document.getElementById('canvas').getContext('2d');
@@ -13,6 +18,7 @@ const overlay = document.getElementById('turtles').getContext('2d');
 let turtles = {};               // name: [x, y, theta]
 let loading = null;             // strokes that came while the snapshot's picture loads
 let retryMs = RETRY_FIRST_MS;
+let heard = null;               // when the viewer last said anything (null: not connected)
 
 function say(text, down) {
   const status = document.getElementById('status');
@@ -23,14 +29,27 @@ function say(text, down) {
 function connect() {
   const scheme = location.protocol === 'https:' ? 'wss://' : 'ws://';
   const socket = new WebSocket(scheme + location.host + '/room');
-  socket.onopen = () => { retryMs = RETRY_FIRST_MS; say('live'); };
-  socket.onmessage = (event) => show(JSON.parse(event.data));
+  socket.onopen = () => say('connected, waiting for the room…');
+  socket.onmessage = (event) => {
+    if (heard === null) { retryMs = RETRY_FIRST_MS; }
+    heard = Date.now();
+    say('live');
+    const message = JSON.parse(event.data);
+    if (message.kind !== 'alive') show(message);
+  };
   socket.onclose = (event) => {
+    heard = null;
     const why = event.reason ? ` (${event.reason})` : '';
-    say(`reconnecting in ${retryMs / 1000} s${why}…`, true);
+    const refused = event.code === REFUSED ? 'refused' : 'reconnecting';
+    say(`${refused}${why}: trying again in ${retryMs / 1000} s…`, true);
     setTimeout(connect, retryMs);
     retryMs = Math.min(2 * retryMs, RETRY_MOST_MS);
   };
+}
+
+function markStale() {
+  const quiet = heard === null ? 0 : Date.now() - heard;
+  if (quiet > STALE_MS) say(`stale: nothing from the viewer for ${Math.round(quiet / 1000)} s`, true);
 }
 
 function show(message) {
@@ -56,11 +75,12 @@ function show(message) {
   document.body.dataset.updates = Number(document.body.dataset.updates || 0) + 1;
 }
 
-function drawStrokes(byColour) {
-  canvas.lineWidth = PEN_WIDTH;
+function drawStrokes(byPen) {
   canvas.lineCap = 'square';     // as turtlesim's pen
-  for (const [colour, points] of Object.entries(byColour || {})) {
+  for (const [pen, points] of Object.entries(byPen || {})) {
+    const [colour, width] = pen.split('/');
     canvas.strokeStyle = colour;
+    canvas.lineWidth = Number(width) || PEN_WIDTH;
     canvas.beginPath();
     for (let i = 0; i + 3 < points.length; i += 4) {
       canvas.moveTo(points[i], points[i + 1]);
@@ -128,3 +148,4 @@ function showRoom(room) {
 }
 
 connect();
+setInterval(markStale, 1000);

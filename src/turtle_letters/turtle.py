@@ -16,6 +16,9 @@ from .letters.primitives import Line, Turn
 from .motion.control import Cancelled, Control
 from .motion.driver import DrawingAborted
 from .motion.executors import STOP, FeedbackExecutor, SmoothExecutor, StallWatch, TimedExecutor
+from .motion.latency import Latency
+
+DEADLINE_FACTOR, DEADLINE_SLACK = 3.0, 3.0   # a stroke's deadline: this times its time, plus s
 
 
 class Turtle:
@@ -27,6 +30,7 @@ class Turtle:
         self.settings = settings
         self.label = label
         self.control = Control()        # the drawing's: set for each drawing
+        self.latency = Latency()        # how late its commands act, kept from stroke to stroke
         # turtlesim's pen starts down in its default colour: a call is needed
         # only for another colour, or once the pen may have been left up
         self.pen_is_down = settings.pen == DEFAULT_PEN
@@ -35,29 +39,37 @@ class Turtle:
         """Turn in place by `degrees` (counter-clockwise positive), timed."""
         pose = self._fresh_pose()
         angle = math.radians(degrees)
-        self._timed(Turn(angle, wrap(pose.theta + angle)), f'rotate {degrees:.1f} deg')
+        self._timed(Turn(angle, wrap(pose.theta + angle)), f'rotate {degrees:.1f} deg',
+                    abs(angle) / self.settings.angular_speed)
 
     def move(self, meters):
         """Drive `meters` straight ahead, timed."""
         pose = self._fresh_pose()
         self._timed(Line(meters, pose.x + meters * math.cos(pose.theta),
                          pose.y + meters * math.sin(pose.theta), pose.theta),
-                    f'move {meters:.3f} m')
+                    f'move {meters:.3f} m', abs(meters) / self.settings.linear_speed)
 
     def steer(self, primitive):
         """Reach the primitive's end, closed loop on the pose."""
         self._fresh_pose()
         s = self.settings
-        what = (f'rotate {math.degrees(primitive.angle):.1f} deg' if isinstance(primitive, Turn)
+        turning = isinstance(primitive, Turn)
+        what = (f'rotate {math.degrees(primitive.angle):.1f} deg' if turning
                 else f'move {primitive.length:.3f} m')
-        self._run(FeedbackExecutor(primitive, s.linear_speed, s.angular_speed), what)
+        seconds = (abs(primitive.angle) / s.angular_speed if turning
+                   else abs(primitive.length) / s.linear_speed)
+        self._run(FeedbackExecutor(primitive, s.linear_speed, s.angular_speed, self.latency),
+                  what, seconds)
 
     def glide(self, points):
         """Smooth mode: trace the polyline through `points` without stopping."""
         if points:
-            self._fresh_pose()
-            self._run(SmoothExecutor(points, self.settings.linear_speed),
-                      f'glide through {len(points)} points')
+            pose = self._fresh_pose()
+            path = [(pose.x, pose.y)] + list(points)
+            length = sum(math.dist(a, b) for a, b in zip(path, path[1:]))
+            self._run(SmoothExecutor(points, self.settings.linear_speed, self.latency),
+                      f'glide through {len(points)} points',
+                      length / self.settings.linear_speed + len(points) * math.pi / 3.1)
 
     def pen(self, down, colour=None):
         """Down (in `colour`, r g b, or else ~pen's) or up; ~pen's width always."""
@@ -74,24 +86,30 @@ class Turtle:
         if not self.pen_is_down:
             self.pen(True)
 
-    def _timed(self, primitive, description):
+    def _timed(self, primitive, description, seconds):
         s = self.settings
         self._run(TimedExecutor(primitive, s.linear_speed, s.angular_speed, s.clock,
-                                now=self.control.clock), description)
+                                now=self.control.clock, latency=self.latency),
+                  description, seconds)
 
     def _fresh_pose(self):
         pose = self.driver.poses.wait(cancelled=lambda: self.control.cancelled)
         self.driver.poses.drop_stale()      # they would count ticks that are not ours
         return pose
 
-    def _run(self, executor, description):
+    def _run(self, executor, description, seconds):
         """One command per pose until the executor is done, then a stop. A
-        turtle that does not do as told for STALL_SECONDS stops the drawing.
+        turtle that does not do as told for STALL_SECONDS, or has not done
+        the stroke (`seconds` long) by its deadline, stops the drawing.
         Paused, the turtle is told to stand while the executor goes on
-        reading poses (so a timed primitive counts the tick a late stop took)."""
-        driver, control = self.driver, self.control
+        reading poses (so a timed primitive counts the tick a late stop
+        took), and the deadline waits."""
+        driver, control, latency = self.driver, self.control, self.latency
         rospy.loginfo('%s%s: start at %s', self.label, description, pose_text(driver.poses.latest))
         watch = StallWatch(STALL_SECONDS)
+        allowed = DEADLINE_FACTOR * seconds + DEADLINE_SLACK
+        deadline = last = time.monotonic()
+        deadline += allowed
         command = executor.start(driver.poses.latest)
         while command is not None:
             if control.cancelled:
@@ -101,9 +119,20 @@ class Turtle:
             sent = STOP if control.paused else command
             driver.publish(sent)
             watch.sent(sent)
+            latency.sending(sent)
             pose = driver.poses.next()
-            if watch.stalled(pose, time.monotonic()):
-                raise DrawingAborted(stall_diagnosis(driver, pose))
+            latency.seen(pose)
+            watch.remembered = max(8, latency.lag + 8)     # a late command still counts
+            now = time.monotonic()
+            deadline += (now - last) if control.paused else 0.0
+            last = now
+            if watch.stalled(pose, now):
+                raise DrawingAborted(stall_diagnosis(driver, pose, latency))
+            if now > deadline:
+                driver.stop()
+                raise DrawingAborted(
+                    f"turtle {driver.name} did not reach the stroke's end ({description}) within "
+                    f'{allowed:.0f} s; commands take about {1000 * latency.seconds():.0f} ms to act')
             command = executor.update(pose)
         driver.publish(STOP)
         rospy.loginfo('%s%s: end at %s', self.label, description, pose_text(driver.poses.latest))

@@ -25,6 +25,7 @@ LAYERS = [
     {'gradebook'},                      # the instructor's: a class graded as handed in
 ]
 PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors', 'motion.control',
+        'motion.latency',
         'classroom.names',
         'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
         'grading.recognition', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',

@@ -23,11 +23,14 @@ def reach_advice():
             'checks this machine')
 
 
-def stall_diagnosis(driver, pose):
-    """A turtle that did not move as commanded although its poses arrive."""
+def stall_diagnosis(driver, pose, latency=None):
+    """A turtle that did not move as commanded although its poses arrive
+    (and how late commands act, when they are late)."""
     linear_x, linear_y, angular = driver.commanded
+    late = (f' (commands take about {1000 * latency.seconds():.0f} ms to act)'
+            if latency is not None and latency.lag >= 2 else '')
     seen = (f'turtle {driver.name} did not move as commanded for {STALL_SECONDS:g} s although '
-            f'its poses arrive: it moves at {pose.linear_velocity:.2f} m/s and '
+            f'its poses arrive{late}: it moves at {pose.linear_velocity:.2f} m/s and '
             f'{pose.angular_velocity:.2f} rad/s, we command {math.hypot(linear_x, linear_y):.2f} '
             f'm/s and {angular:.2f} rad/s on {driver.cmd_vel_topic}')
     others = other_publishers(driver.cmd_vel_topic)

@@ -28,11 +28,15 @@ from typing import Callable, NamedTuple, Optional
 from ..letters.geometry import wrap
 from ..letters.layout import SIM_TICK
 from ..letters.primitives import Turn
+from .latency import Ahead
 
 SETTLED = 1e-5              # m or rad: a timed primitive is done this close to its amount
 SETTLE_TICKS = 4            # a timed primitive's way back is spread over this many ticks
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex
 HEADING_TOLERANCE = 1e-4    # rad
+# Over a slow network a pose is a guess (where the commands in flight lead):
+# done this close to it, the turtle is within a few mm of it.
+LATE_POSITION_TOLERANCE, LATE_HEADING_TOLERANCE = 1e-3, 1e-3
 TURN_PER_TICK = 0.05        # rad: smooth mode turns at most 3.1 rad/s
 ON_COURSE = 1e-5            # rad: smooth mode holds its command while it faces the vertex this closely
 
@@ -55,7 +59,10 @@ class TimedExecutor:
     ('sim') or the wall clock ('wall', read with `now`)."""
 
     def __init__(self, primitive, linear_speed: float, angular_speed: float,
-                 clock: str = 'sim', now: Callable[[], float] = time.monotonic) -> None:
+                 clock: str = 'sim', now: Callable[[], float] = time.monotonic,
+                 latency=None) -> None:
+        self.latency = latency      # commands in flight, counted in (sim clock)
+        self.first = latency.count if latency else 0    # the number of our first command
         self.turning = isinstance(primitive, Turn)
         amount = primitive.angle if self.turning else primitive.length
         self.sign = 1.0 if amount >= 0 else -1.0
@@ -70,14 +77,23 @@ class TimedExecutor:
         # cap of this round (the first at full speed; see update()).
         self.way = 1.0
         self.stopping = False
+        self.stops = 0          # stops sent in a row
         self.cap = self.speed
 
+    def _on_the_way(self) -> float:
+        """How much of the amount our commands in flight will still make."""
+        if self.latency is None or self.clock == 'wall':
+            return 0.0
+        part = 2 if self.turning else 0
+        return sum(c[part] * self.sign * SIM_TICK for c in self.latency.in_flight(self.first))
+
     def _command(self) -> Optional[Command]:
-        remaining = (self.amount - self.elapsed_amount) * self.way
+        remaining = (self.amount - self.elapsed_amount - self._on_the_way()) * self.way
         if remaining <= 1e-9:
             if self.clock == 'wall':
                 return None
             self.stopping = True
+            self.stops += 1
             return STOP
         if self.clock == 'wall':
             speed = self.speed
@@ -107,21 +123,30 @@ class TimedExecutor:
         used = abs(pose.angular_velocity if self.turning else pose.linear_velocity)
         self.elapsed_amount += self.way * used * SIM_TICK
         if self.stopping:
-            if used:
+            if used or self.stops <= self._stops_to_show():
+                self.stops += 1
                 return STOP                      # the stop has not come yet
             error = self.amount - self.elapsed_amount
             if abs(error) <= SETTLED:
                 return None
             self.way = 1.0 if error > 0 else -1.0
             self.cap = min(self.speed, abs(error) / (SETTLE_TICKS * SIM_TICK))
-            self.stopping = False
+            self.stopping, self.stops = False, 0
         return self._command()
+
+    def _stops_to_show(self) -> int:
+        """Stops sent before a standing pose surely shows them: over a slow
+        network, one might show a stop from before our last commands."""
+        lag = self.latency.lag if self.latency is not None else 0
+        return lag + self.latency.spread + 2 if lag else 0
 
 
 class FeedbackExecutor:
     """Reach the primitive's absolute heading or point, measured on the pose."""
 
-    def __init__(self, primitive, linear_speed: float, angular_speed: float) -> None:
+    def __init__(self, primitive, linear_speed: float, angular_speed: float,
+                 latency=None) -> None:
+        self.latency = latency      # the pose is taken where the commands in flight lead
         self.primitive = primitive
         self.linear_speed = linear_speed
         self.angular_speed = angular_speed
@@ -135,24 +160,37 @@ class FeedbackExecutor:
         return self.update(pose)
 
     def update(self, pose) -> Optional[Command]:
+        # Over a slow network: the pose its commands in flight lead to, and
+        # a gentler approach the more the delay varies (a late command is
+        # used twice, an overtaken one never).
+        # It is done only once the late pose shows it too: what was guessed
+        # of the commands in flight has come true.
+        ticks, near, turned, seen = 2, POSITION_TOLERANCE, HEADING_TOLERANCE, pose
+        if self.latency is not None and self.latency.lag:
+            pose = Ahead(pose, self.latency.in_flight())
+            ticks += 2 * self.latency.spread
+            near, turned = LATE_POSITION_TOLERANCE, LATE_HEADING_TOLERANCE
         if self.last_theta is not None:
             self.turn_left -= wrap(pose.theta - self.last_theta)
         self.last_theta = pose.theta
         heading_error = wrap(self.primitive.heading - pose.theta)
         if isinstance(self.primitive, Turn) and abs(self.turn_left) > math.pi / 2:
             heading_error = self.turn_left
-        angular = _clamp(heading_error / (2 * SIM_TICK), self.angular_speed)
+        angular = _clamp(heading_error / (ticks * SIM_TICK), self.angular_speed)
+        seen_heading = abs(wrap(self.primitive.heading - seen.theta)) < turned
         if isinstance(self.primitive, Turn):
-            if abs(heading_error) < HEADING_TOLERANCE:
+            if abs(heading_error) < turned and seen_heading:
                 return None
             return Command(angular=angular)
 
         dx, dy = self.primitive.x - pose.x, self.primitive.y - pose.y
         cos_t, sin_t = math.cos(pose.theta), math.sin(pose.theta)
         ahead, left = cos_t * dx + sin_t * dy, -sin_t * dx + cos_t * dy
-        if math.hypot(ahead, left) < POSITION_TOLERANCE and abs(heading_error) < HEADING_TOLERANCE:
+        seen_there = math.hypot(self.primitive.x - seen.x, self.primitive.y - seen.y) < near
+        if math.hypot(ahead, left) < near and abs(heading_error) < turned and seen_there \
+                and seen_heading:
             return None
-        vx, vy = ahead / (2 * SIM_TICK), left / (2 * SIM_TICK)
+        vx, vy = ahead / (ticks * SIM_TICK), left / (ticks * SIM_TICK)
         scale = min(1.0, self.linear_speed / max(math.hypot(vx, vy), 1e-12))
         return Command(vx * scale, vy * scale, angular)
 
@@ -177,7 +215,8 @@ class SmoothExecutor:
     before each vertex to make up for it would cost more time than it saves.
     """
 
-    def __init__(self, points, linear_speed: float) -> None:
+    def __init__(self, points, linear_speed: float, latency=None) -> None:
+        self.latency = latency      # the pose is taken where the commands in flight lead
         self.points = list(points)
         self.step = linear_speed * SIM_TICK
         self.next = 0           # index of the vertex to reach next
@@ -186,22 +225,38 @@ class SmoothExecutor:
         return self.update(pose)
 
     def update(self, pose) -> Optional[Command]:
+        # Over a slow network: the pose its commands in flight lead to; the
+        # more the delay varies, the more gently a vertex is come to (a late
+        # command is used twice, an overtaken one never), and the last is
+        # reached once the late pose shows it too.
+        near, gentle, seen = POSITION_TOLERANCE, 0, pose
+        if self.latency is not None and self.latency.lag:
+            pose = Ahead(pose, self.latency.in_flight())
+            near, gentle = LATE_POSITION_TOLERANCE, self.latency.spread
         x, y = pose.x, pose.y
         while self.next < len(self.points) and math.hypot(
-                self.points[self.next][0] - x, self.points[self.next][1] - y) < POSITION_TOLERANCE:
+                self.points[self.next][0] - x, self.points[self.next][1] - y) < near:
             self.next += 1
         if self.next == len(self.points):
-            return None
+            last = self.points[-1]
+            if math.hypot(last[0] - seen.x, last[1] - seen.y) < near:
+                return None
+            self.next -= 1      # not there yet, whatever was guessed
         vx, vy = self.points[self.next]
         dx, dy = vx - x, vy - y
         distance = math.hypot(dx, dy)
+        if distance < near:
+            return STOP         # on the last vertex, by the guess: wait for the pose to show it
         turn = _clamp(wrap(math.atan2(vy - y, vx - x) - pose.theta), TURN_PER_TICK)
-        if distance > self.step and abs(turn) < ON_COURSE:
+        step = self.step
+        if gentle and distance < (2 + gentle) * step:
+            step = distance / (1 + gentle)
+        if distance > step and abs(turn) < ON_COURSE:
             # Straight at the vertex: the same command each tick, which the
             # driver need not send again (a long edge costs a few messages).
-            return Command(self.step / SIM_TICK, 0.0, 0.0)
-        if distance > self.step:                    # not this tick: go on along the edge
-            dx, dy = dx * self.step / distance, dy * self.step / distance
+            return Command(step / SIM_TICK, 0.0, 0.0)
+        if distance > step:                         # not this tick: go on along the edge
+            dx, dy = dx * step / distance, dy * step / distance
         new_theta = pose.theta + turn               # the heading turtlesim moves along
         cos_t, sin_t = math.cos(new_theta), math.sin(new_theta)
         return Command((cos_t * dx + sin_t * dy) / SIM_TICK, (-sin_t * dx + cos_t * dy) / SIM_TICK,

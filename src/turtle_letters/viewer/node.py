@@ -1,16 +1,18 @@
 """Node view (view.py): the shared canvas, live, for any seat in the room.
 
-It rebuilds the canvas from every turtle's pose and color_sensor (trails.py;
-so it works with the real turtlesim, which publishes no picture), and
+It rebuilds the canvas (trails.py) from the ink the bundled simulator says
+it laid (its `ink` topic), or, with the real turtlesim, which publishes no
+ink, from every turtle's pose and color_sensor; and it
 serves it (server.py) as a page at http://ADDRESS:PORT/, with each turtle,
 each student's drawing from their draw action's feedback, and the room's
 scoreboard when there is one. It publishes the canvas on `canvas/image`
 (sensor_msgs/Image, rgb8) for image_view, rqt_image_view and rviz.
 
 Parameters (VIEWING): ~port (int, 8080), ~address (str, '127.0.0.1'; ''
-for every interface), ~image_rate (Hz, 5.0), ~max_pages (int, 50).
+for every interface), ~image_rate (Hz, 5.0), ~max_pages (int, 120).
 """
 
+import json
 import os
 import struct
 
@@ -59,7 +61,7 @@ VIEWING = {p.name: p for p in (
               _address),
     Parameter('image_rate', 'float', '5.0', 'Hz', 'how often canvas/image is published',
               positive),
-    Parameter('max_pages', 'int', '50', '', 'pages open at once; past it, a polite refusal',
+    Parameter('max_pages', 'int', '120', '', 'pages open at once; past it, a polite refusal',
               _pages),
 )}
 
@@ -74,6 +76,7 @@ class View:
         self.scoreboard = ''
         self.turtles = {}           # name: its two subscribers
         self.simulators = set()     # nodes that serve /spawn
+        self.ink = None             # the subscriber to a simulator's ink, when it has one
         self.master = rosgraph.Master(rospy.get_name())
 
     def room(self):
@@ -87,6 +90,10 @@ class View:
         except (OSError, rosgraph.MasterException):
             return
         self.simulators = set(dict(services).get('/spawn', []))
+        for simulator in sorted(self.simulators):
+            if topics.get(f'{simulator}/ink') == 'std_msgs/String' and self.ink is None:
+                self.ink = rospy.Subscriber(f'{simulator}/ink', String, lambda m: self.trails.ink(
+                    _lines(m.data)), queue_size=1000)
         for topic, kind in topics.items():
             turtle = topic[:-len('/pose')]
             if kind == 'turtlesim/Pose' and topic.endswith('/pose') and turtle not in self.turtles:
@@ -109,8 +116,19 @@ class View:
     def on_log(self, message):
         """turtlesim's own word that it cleared or reset its canvas."""
         what = CANVAS_WORDS.get(message.msg)
+        if self.trails.inked:       # the ink says so itself, with the background
+            return
         if what and message._connection_header.get('callerid') in self.simulators:
             (self.trails.clear if what == 'clear' else self.trails.reset)()
+
+
+def _lines(text):
+    """A tick of the simulator's ink (a JSON list of its record's lines); [] if it is not one."""
+    try:
+        lines = json.loads(text)
+    except ValueError:
+        return []
+    return [line for line in lines if isinstance(line, dict)] if isinstance(lines, list) else []
 
 
 def _background(master):

@@ -7,7 +7,7 @@ from PyQt5.QtCore import QBuffer, QIODevice, QLineF, QPointF, Qt
 from PyQt5.QtGui import QColor, QImage, QPainter, QPen
 
 from ..letters.layout import CANVAS_PIXELS
-from .trails import PEN_WIDTH, to_pixels
+from .trails import to_pixels
 
 
 class Painting:
@@ -26,17 +26,24 @@ class Painting:
             if clears != self.clears:
                 self.image.fill(QColor(*self.trails.background))
                 self.clears, self.count = clears, 0
-            by_colour = {}      # a pen costs more to set than a line to draw
+            strokes = strokes or []     # (None: folded past it, which fold() never does to it)
+            by_pen = {}         # a pen costs more to set than a line to draw
             for stroke in strokes:
-                by_colour.setdefault(stroke.colour, []).append(
+                by_pen.setdefault((stroke.colour, stroke.width), []).append(
                     QLineF(QPointF(*to_pixels(stroke.x0, stroke.y0)),
                            QPointF(*to_pixels(stroke.x1, stroke.y1))))
             painter = QPainter(self.image)
-            for colour, lines in by_colour.items():
-                painter.setPen(QPen(QColor(*colour), PEN_WIDTH, Qt.SolidLine, Qt.SquareCap))
+            for (colour, width), lines in by_pen.items():
+                painter.setPen(QPen(QColor(*colour), width, Qt.SolidLine, Qt.SquareCap))
                 painter.drawLines(lines)
             painter.end()
             self.count += len(strokes)
+
+    def painted(self):
+        """(clears, strokes since that clear) the picture holds, brought up to date."""
+        self.update()
+        with self.lock:
+            return self.clears, self.count
 
     def rgb(self):
         """The pixels, row after row, 3 bytes (r, g, b) each: sensor_msgs/Image's rgb8."""

@@ -7,7 +7,12 @@ Unknown paths get 404 and other methods 405, with no traceback ever. Each
 page gets a snapshot when it connects (the canvas as a PNG, every turtle),
 then every SEND_PERIOD only what changed since what it was sent, never a
 backlog: a page whose last update is still unread is skipped (and dropped
-after STALLED s), and one too far behind gets a snapshot again."""
+after STALLED s), and one too far behind gets a snapshot again. A quiet
+room still sends each page a word every ALIVE s, so a page can tell a
+quiet room from a lost one; a page that answers no ping within PING_TIMEOUT
+s (a laptop gone to sleep) is dropped, and its place freed. The strokes
+every page and the painting have are folded away (Trails.fold): memory
+stays bounded for as long as the room draws."""
 import base64
 import json
 import math
@@ -23,6 +28,10 @@ from .trails import to_pixels
 SEND_PERIOD = 0.04      # s between updates to a page: a pose is on it within about this
 STALLED = 10.0          # s a page may leave an update unread before it is dropped
 CATCH_UP = 5000         # strokes behind past which a page gets a snapshot instead
+ALIVE = 2.0             # s of quiet after which a page is sent a word that the viewer is there
+PING_PERIOD, PING_TIMEOUT = 5.0, 15.0   # s: dead connections found by WebSocket pings
+FOLD_EVERY = 25         # ticks (1 s) between folds of the strokes every reader has
+REFUSED = 1013          # WebSocket close code "try again later": the page backs off
 FILES = {'/': ('index.html', 'text/html; charset=utf-8'),
          '/viewer.js': ('viewer.js', 'text/javascript; charset=utf-8'),
          '/viewer.css': ('viewer.css', 'text/css; charset=utf-8')}
@@ -57,13 +66,13 @@ def _finite(value):
 
 
 def strokes_message(strokes):
-    """Strokes as {colour: [x0, y0, x1, y1, ...]} in canvas pixels, 0.1 px apart."""
-    by_colour = {}
+    """Strokes as {"colour/width": [x0, y0, x1, y1, ...]} in canvas pixels, 0.1 px apart."""
+    by_pen = {}
     for s in strokes:
         (x0, y0), (x1, y1) = to_pixels(s.x0, s.y0), to_pixels(s.x1, s.y1)
-        by_colour.setdefault(_colour(s.colour), []).extend(
+        by_pen.setdefault(f'{_colour(s.colour)}/{s.width}', []).extend(
             round(v, 1) for v in (x0, y0, x1, y1))
-    return by_colour
+    return by_pen
 
 
 def turtles_message(turtles):
@@ -121,7 +130,7 @@ class Page(tornado.websocket.WebSocketHandler):
 
     def open(self):
         if len(self.pages.open) >= self.pages.most:
-            self.close(1013, f'the viewer shows {self.pages.most} pages already: try again later')
+            self.close(REFUSED, f'the viewer shows {self.pages.most} pages already')
             return
         self.pages.open.add(self)
         self.send(_json(self.snapshot()))
@@ -148,7 +157,8 @@ class Page(tornado.websocket.WebSocketHandler):
         key = (self.clears, self.count)
         if key not in shared:
             clears, strokes, turtles = self.view.trails.since(*key)
-            shared[key] = (clears, len(strokes), _json(strokes_message(strokes)))
+            shared[key] = (clears, len(strokes) if strokes is not None else CATCH_UP + 1,
+                           _json(strokes_message(strokes or [])))
         if 'turtles' not in shared:
             shared['turtles'] = turtles_message(self.view.trails.turtles_now())
             shared['room'] = self.view.room()
@@ -162,7 +172,7 @@ class Page(tornado.websocket.WebSocketHandler):
         changed = {k: v for k, v in room.items() if self.sent_room.get(k) != v}
         self.sent_turtles, self.sent_room = now, room
         if not (new or moved or gone or changed):
-            return None
+            return '{"kind": "alive"}' if time.monotonic() - self.since > ALIVE else None
         return (f'{{"kind": "update", "strokes": {strokes_json}, "turtles": {_json(moved)}, '
                 f'"gone": {_json(gone)}, "room": {_json(changed)}}}')
 
@@ -189,11 +199,17 @@ class Pages:
 
     def __init__(self, most):
         self.most, self.open = most, set()
+        self.ticks = 0
 
-    def tick(self):
+    def tick(self, view):
         shared = {}
         for page in list(self.open):
             page.tick(shared)
+        self.ticks += 1
+        if self.ticks % FOLD_EVERY == 0:    # the picture brought up to date, then folded
+            clears, painted = view.painting.painted()
+            view.trails.fold(clears, min([page.count for page in self.open
+                                          if page.clears == clears] + [painted]))
 
 
 def application(view, web_folder, most_pages):
@@ -203,6 +219,8 @@ def application(view, web_folder, most_pages):
     routes += [('/canvas.png', CanvasPng, dict(view=view)),
                ('/room', Page, dict(view=view, pages=pages))]
     app = tornado.web.Application(routes, default_handler_class=NotFound,
-                                  websocket_max_message_size=1024, serve_traceback=False)
-    tornado.ioloop.PeriodicCallback(pages.tick, SEND_PERIOD * 1000).start()
+                                  websocket_max_message_size=1024, serve_traceback=False,
+                                  websocket_ping_interval=PING_PERIOD,
+                                  websocket_ping_timeout=PING_TIMEOUT)
+    tornado.ioloop.PeriodicCallback(lambda: pages.tick(view), SEND_PERIOD * 1000).start()
     return app, pages

@@ -1,5 +1,8 @@
-"""The shared canvas as the viewer rebuilds it, from what every simulator
-publishes, the real turtlesim included: each turtle's pose, and its
+"""The shared canvas as the viewer rebuilds it. With the bundled simulator
+it is the ink the simulator laid, as it says on its `ink` topic: each
+segment with its colour and width, each clear and reset with the
+background (`ink()`). With the real turtlesim, which publishes no ink, it
+is rebuilt from what it does publish: each turtle's pose, and its
 color_sensor, the colour under it. That colour is the pen's while the pen
 is down and the background's while it is up, so a step ending on another
 colour than the background is a stroke in that colour. No ROS here.
@@ -10,7 +13,7 @@ under 1.5 px (up to about 2 m/s): a pen lifted or put down shows a tick
 late, and about one reading in twenty on a straight line falls on a pixel
 the line missed, a tick-long gap that the strokes' square caps close. A
 stroke runs from where the last colour was read to the newest pose. The
-width is not published: strokes are PEN_WIDTH wide, turtlesim's default. A
+width is not published: such strokes are PEN_WIDTH wide, turtlesim's default. A
 pen-up step that ends on another line reads its colour and retraces a tick
 of it.
 """
@@ -36,6 +39,7 @@ class Stroke(NamedTuple):
     y0: float
     x1: float
     y1: float
+    width: int = PEN_WIDTH
 
 
 class Turtle(NamedTuple):
@@ -54,8 +58,10 @@ class Trails:
     def __init__(self, background=DEFAULT_BACKGROUND):
         self.background = tuple(background)
         self.turtles: Dict[str, Turtle] = {}
-        self.strokes: List[Stroke] = []
+        self.strokes: List[Stroke] = []     # those after the first `folded` since the clear
+        self.folded = 0
         self.clears = 0
+        self.inked = False      # strokes come from the simulator's ink, not the colour under it
         self.lock = threading.Lock()
 
     def pose(self, name, x, y, theta):
@@ -78,9 +84,30 @@ class Trails:
             if turtle is None:
                 return
             here = (turtle.x, turtle.y)
-            if rgb != self.background and here != turtle.drawn_to:
+            if rgb != self.background and here != turtle.drawn_to and not self.inked:
                 self.strokes.append(Stroke(name, rgb, *turtle.drawn_to, *here))
             self.turtles[name] = turtle._replace(drawn_to=here, colour=rgb)
+
+    def ink(self, lines):
+        """The simulator's own account of a tick (its `ink` topic): the
+        segments its pens laid, clears and resets with their background."""
+        with self.lock:
+            self.inked = True
+            for line in lines:
+                kind = line.get('k')
+                if kind in ('clear', 'reset'):
+                    self.background = tuple(line.get('background', self.background))
+                    self.strokes = []
+                    self.clears += 1
+                    self.folded = 0
+                    if kind == 'reset':
+                        self.turtles = {}
+                elif kind == 'kill':
+                    self.turtles.pop(line.get('turtle'), None)
+                for x0, y0, x1, y1, r, g, b, width in line.get('ink', []):
+                    if all(math.isfinite(v) for v in (x0, y0, x1, y1)):
+                        self.strokes.append(Stroke(line.get('turtle', ''), (r, g, b), x0, y0,
+                                                   x1, y1, width))
 
     def gone(self, name):
         """Turtle `name` was killed: its strokes stay, as on turtlesim's canvas."""
@@ -91,6 +118,7 @@ class Trails:
         with self.lock:
             self.strokes = []
             self.clears += 1
+            self.folded = 0
 
     def reset(self):
         """turtlesim reset: the canvas cleared and every turtle gone
@@ -98,6 +126,7 @@ class Trails:
         with self.lock:
             self.strokes, self.turtles = [], {}
             self.clears += 1
+            self.folded = 0
 
     def turtles_now(self):
         with self.lock:
@@ -106,7 +135,22 @@ class Trails:
     def since(self, clears, count):
         """(clears, strokes after the first `count`, turtles) for a reader
         that has seen `count` strokes since clear number `clears`; all the
-        strokes when a clear came since."""
+        strokes when a clear came since; None for the strokes when those it
+        lacks are folded away (it must start again from a picture)."""
         with self.lock:
             start = count if clears == self.clears else 0
-            return self.clears, self.strokes[start:], dict(self.turtles)
+            if start < self.folded:
+                return self.clears, None, dict(self.turtles)
+            return self.clears, self.strokes[start - self.folded:], dict(self.turtles)
+
+    def fold(self, clears, count):
+        """Forgets the first `count` strokes since clear number `clears`, if
+        it is the last: every reader has them (in a picture), so memory
+        stays bounded."""
+        with self.lock:
+            if clears != self.clears:
+                return
+            drop = min(count - self.folded, len(self.strokes))
+            if drop > 0:
+                del self.strokes[:drop]
+                self.folded += drop

@@ -1,12 +1,11 @@
 """The executors in closed loop with the simulator's own step function."""
 import math
 import random
-import struct
-from typing import NamedTuple
 
 import pytest
 
 from support.accuracy import primitives_of
+from support.ticks import PoseMessage, sample
 from turtle_letters.letters.font import BUILTIN
 from turtle_letters.letters.geometry import PlannedPose
 from turtle_letters.letters.primitives import Line, Turn
@@ -14,25 +13,6 @@ from turtle_letters.motion.executors import FeedbackExecutor, StallWatch, TimedE
 from turtlesim_compat.world import CENTRE, Turtle
 
 EXECUTORS = {'timed': TimedExecutor, 'feedback': FeedbackExecutor}
-
-
-class PoseMessage(NamedTuple):
-    """The fields of turtlesim/Pose, without ROS."""
-    x: float
-    y: float
-    theta: float
-    linear_velocity: float
-    angular_velocity: float
-
-
-def f32(value):
-    """Pose fields travel as float32."""
-    return struct.unpack('f', struct.pack('f', value))[0]
-
-
-def sample(turtle):
-    return PoseMessage(f32(turtle.x), f32(turtle.y), f32(turtle.theta),
-                      f32(turtle.linear_speed), f32(turtle.angular))
 
 
 def run(primitives, mode, turtle, late_every=0, linear=1.0, angular=0.25):

@@ -114,7 +114,7 @@ def test_a_page_gets_a_snapshot_then_only_what_changed(room):
     assert snapshot['kind'] == 'snapshot' and snapshot['canvas'].startswith('data:image/png')
     assert snapshot['turtles'] == {'turtle1': [45.0, 454.0, 0.0]}
     assert update['kind'] == 'update' and update['turtles'] == {'turtle1': [90.0, 454.0, 0.5]}
-    assert update['strokes'] == {'#b3b8ff': [45.0, 454.0, 90.0, 454.0]}
+    assert update['strokes'] == {'#b3b8ff/3': [45.0, 454.0, 90.0, 454.0]}
     assert len(room.trails.strokes) == 1
 
 
@@ -174,3 +174,39 @@ def test_no_nan_or_infinity_ever_reaches_a_page(room):
     snapshot = asyncio.run(look())
     assert list(snapshot['turtles']) == ['turtle2']
     assert snapshot['room']['drawings'] == {'/alice': dict(eta=None, progress=None)}
+
+
+def test_a_quiet_room_still_says_it_is_there(room, monkeypatch):
+    monkeypatch.setattr(server, 'ALIVE', 0.3)
+
+    async def listen():
+        connection, _ = await _page(room.url)
+        started = time.monotonic()
+        said = json.loads(await asyncio.wait_for(connection.read_message(), 3))
+        connection.close()
+        return said, time.monotonic() - started
+    said, after = asyncio.run(listen())
+    assert said == {'kind': 'alive'} and 0.2 < after < 2.0
+
+
+def test_strokes_every_reader_holds_are_folded_and_a_page_behind_them_starts_again(room):
+    async def draw_and_look():
+        connection, _ = await _page(room.url)
+        for i in range(3000):
+            room.trails.pose('/turtle1', 1 + i % 900 / 100, 1.0, 0.0)
+            room.trails.colour('/turtle1', PEN)
+            if i % 100 == 0:
+                await connection.read_message()
+        deadline = time.monotonic() + 5
+        while room.trails.strokes and time.monotonic() < deadline:
+            await asyncio.sleep(0.1)
+        folded = (len(room.trails.strokes), room.trails.folded)
+        late, (snapshot,) = await _page(room.url)       # a page that comes after the fold
+        connection.close()
+        late.close()
+        return folded, snapshot
+    (kept, folded), snapshot = asyncio.run(draw_and_look())
+    assert kept == 0 and folded > 2900          # everyone had them: all folded away
+    assert snapshot['kind'] == 'snapshot'       # the picture holds them
+    assert room.trails.since(room.trails.clears, 0)[1] is None
+    assert room.trails.since(room.trails.clears, folded)[1] == []

@@ -73,3 +73,17 @@ def test_a_pose_that_is_not_finite_is_no_place():
         trails.pose('/turtle1', *bad)
     trails.colour('/turtle1', (179, 184, 255))
     assert trails.turtles_now()['/turtle1'][:3] == (1.0, 1.0, 0.0) and trails.strokes == []
+
+
+def test_the_simulators_ink_is_drawn_as_laid_and_the_colour_under_a_turtle_no_more():
+    trails = Trails()
+    trails.ink([dict(k='move', turtle='turtle1', ink=[[1.0, 1.0, 1.05, 1.0, 255, 0, 0, 1]]),
+                dict(k='jump', turtle='turtle1', ink=[]),
+                dict(k='move', turtle='turtle1', ink=[[1.05, 1.0, float('nan'), 1.0, 9, 9, 9, 3]])])
+    trails.pose('turtle1', 2.0, 2.0, 0.0)
+    trails.colour('turtle1', (255, 0, 0))       # the pose-based guess: not drawn beside the ink
+    assert trails.strokes == [Stroke('turtle1', (255, 0, 0), 1.0, 1.0, 1.05, 1.0, 1)]
+    trails.ink([dict(k='clear', background=[10, 20, 30])])
+    assert (trails.strokes, trails.clears, trails.background) == ([], 1, (10, 20, 30))
+    trails.ink([dict(k='reset', background=[69, 86, 255]), dict(k='spawn', turtle='turtle1')])
+    assert (trails.turtles, trails.clears, trails.background) == ({}, 2, (69, 86, 255))

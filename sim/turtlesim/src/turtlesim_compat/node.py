@@ -29,6 +29,7 @@ import warnings
 
 import rospy
 from geometry_msgs.msg import Twist
+from std_msgs.msg import String
 from std_srvs.srv import Empty, EmptyResponse, Trigger, TriggerResponse
 from turtlesim.msg import Color, Pose
 from turtlesim.srv import (Kill, KillResponse, SetPen, SetPenResponse, Spawn, SpawnResponse,
@@ -159,6 +160,7 @@ class TurtlesimNode:
         self._calls = queue.Queue()
         self.changed = True   # the picture differs from the last one shown
         self.record = Record()
+        self._ink = rospy.Publisher('~ink', String, queue_size=100)
         self._canvas_png = self._read_canvas_png()
         rospy.loginfo('Starting turtlesim with node name %s', rospy.get_name())
         self._canvas = canvas_factory(self._background())
@@ -209,6 +211,7 @@ class TurtlesimNode:
 
     def tick(self):
         with self._lock:
+            self.record.showing = self._ink.get_num_connections() > 0
             while not self._calls.empty():
                 call = self._calls.get_nowait()
                 if call.take():
@@ -240,6 +243,9 @@ class TurtlesimNode:
                 if turtle.linear_speed or turtle.angular or moved:
                     self.changed = True
             self.record.tick_ended()
+            shown = self.record.take_shown()
+        if shown:
+            self._ink.publish(String(shown))
 
     def frame(self):
         with self._lock:
@@ -337,7 +343,7 @@ class TurtlesimNode:
 
         def run():
             self._canvas.clear(background)
-            self.record('clear')
+            self.record('clear', background=list(background))
             self.changed = True
         self.at_next_tick(run)
         return EmptyResponse()
@@ -352,7 +358,7 @@ class TurtlesimNode:
             self._endpoints.clear()
             self._world = World()
             self._canvas.clear(background)
-            self.record('reset')
+            self.record('reset', background=list(background))
             self._spawn(CENTRE, CENTRE, 0.0, '')
         self.at_next_tick(run)
         return EmptyResponse()

@@ -12,6 +12,10 @@ Lines ('k' is the kind, 't' time.monotonic() when it happened):
     cmd    turtle n                commands that came on cmd_vel since the last such line
     end    why                     the simulator shuts down
 A segment is [x0, y0, x1, y1, r, g, b, width]: a line the pen left.
+
+The lines that change the picture (ink laid, clear, reset, spawn, kill)
+are also kept for the tick's end, when the node publishes them on `~ink`
+(std_msgs/String, a JSON list a tick) for pages that show the canvas.
 """
 import json
 import os
@@ -19,6 +23,7 @@ import time
 
 FD_VARIABLE = 'TURTLESIM_RECORD_FD'
 COMMANDS_EVERY = 6      # ticks between counts of commands (about 0.1 s)
+PICTURE = ('clear', 'reset', 'spawn', 'kill')     # beside ink, what a page of the canvas needs
 
 
 def ink(segments):
@@ -38,14 +43,26 @@ class Record:
         self.out = os.fdopen(int(fd), 'w', buffering=1) if fd.isdigit() else None
         self.commands = {}      # turtle: commands since the last count
         self.ticks = 0
+        self.showing = False    # whether the picture's lines are kept for `shown`
+        self.shown = []         # this tick's lines that change the picture
 
     def __call__(self, kind, **fields):
+        if self.out is None and not self.showing:
+            return
+        line = dict(k=kind, t=time.monotonic(), **fields)
+        if self.showing and (fields.get('ink') or kind in PICTURE):
+            self.shown.append(line)
         if self.out is None:
             return
         try:
-            self.out.write(json.dumps(dict(k=kind, t=time.monotonic(), **fields)) + '\n')
+            self.out.write(json.dumps(line) + '\n')
         except (OSError, ValueError):   # the reader is gone: nobody to tell
             self.out = None
+
+    def take_shown(self):
+        """This tick's lines that change the picture, as JSON ('' for none)."""
+        shown, self.shown = self.shown, []
+        return json.dumps(shown) if shown else ''
 
     def command(self, turtle):
         if self.out is not None:
@@ -53,6 +70,8 @@ class Record:
 
     def turtle_ticked(self, turtle, before, after_jump, jumped, moved):
         """A turtle's tick: its teleports' and its move's changes, if any."""
+        if self.out is None and not self.showing:
+            return
         if after_jump != before:
             self('jump', turtle=turtle.name, to=list(after_jump), ink=ink(jumped))
         now = where(turtle)

@@ -1,0 +1,106 @@
+"""How late commands act, measured on the poses, and what the commands
+still on their way will do. No ROS here.
+
+One command is sent per pose. With nothing in between, the pose after a
+command shows it (turtlesim reports the velocities it moved with). Over a
+slow network a command shows `lag` poses later: the last `lag` commands
+sent are in flight, and each will still move the turtle a tick. The
+executors act on where those commands will take the turtle (`ahead`), not
+on where the late pose says it was: a loop that waits for its own commands
+to show oscillates around its target and never settles.
+"""
+import math
+import statistics
+from collections import deque
+from typing import List
+
+from ..letters.layout import SIM_TICK
+
+SAME = 1e-3             # m/s or rad/s: a pose's velocities show a command this closely
+REMEMBERED = 64         # commands kept (a lag is at most this)
+SAMPLES = 9             # lags measured, the median of which is the lag
+GIVE_UP = 60            # commands after which a change never seen is no longer waited for
+
+
+def signature(command):
+    """What a pose reports of a command: its speed and its turn."""
+    return math.hypot(command[0], command[1]), command[2]
+
+
+def shows(pose, command):
+    """Whether `pose` reports moving with `command` (x, y, angular)."""
+    return (abs(pose.linear_velocity - math.hypot(command[0], command[1])) < SAME
+            and abs(pose.angular_velocity - command[2]) < SAME)
+
+
+def _alike(a, b):
+    return all(abs(x - y) < SAME for x, y in zip(signature(a), signature(b)))
+
+
+class Latency:
+    """The commands sent, and how many poses a change of command takes to show."""
+
+    def __init__(self):
+        self.sent = deque(maxlen=REMEMBERED)
+        self.lags = deque(maxlen=SAMPLES)
+        self.count = 0
+        self.waiting = None     # (number, command) of a change sent and not yet shown
+
+    def sending(self, command):
+        """A command sent. One unlike any of the last REMEMBERED, as a pose
+        reports them, is timed: the first pose like it shows it."""
+        command = tuple(command)
+        if self.waiting is not None and self.count - self.waiting[0] > GIVE_UP:
+            self.waiting = None         # never shown (another came first): measure anew
+        if self.waiting is None and not any(_alike(command, sent) for sent in self.sent):
+            self.waiting = (self.count, command)
+        self.sent.append(command)
+        self.count += 1
+
+    def seen(self, pose):
+        if self.waiting is not None and shows(pose, self.waiting[1]):
+            self.lags.append(self.count - self.waiting[0] - 1)
+            self.waiting = None
+
+    @property
+    def lag(self) -> int:
+        """Poses a command takes to show beyond the next one (0: no delay)."""
+        return int(statistics.median(self.lags)) if self.lags else 0
+
+    @property
+    def spread(self) -> int:
+        """How much the lag varies (the middle half of its samples): jitter, in poses."""
+        if len(self.lags) < 4:
+            return 0
+        lags = sorted(self.lags)
+        return lags[3 * len(lags) // 4] - lags[len(lags) // 4]
+
+    def seconds(self) -> float:
+        """About how long a command takes to act, as measured."""
+        return (self.lag + 1) * SIM_TICK
+
+    def in_flight(self, since=0) -> List[tuple]:
+        """The commands sent that the newest pose does not show yet, oldest
+        first; of them, only those from number `since` on."""
+        lag = min(self.lag, len(self.sent), max(0, self.count - since))
+        return list(self.sent)[len(self.sent) - lag:] if lag else []
+
+    def shown(self) -> int:
+        """The number of the command the newest pose shows (-1: none yet)."""
+        return self.count - 1 - self.lag
+
+
+class Ahead:
+    """A pose as the commands in flight will leave it, as turtlesim moves a
+    turtle each tick: turn first, then move along the new heading."""
+
+    def __init__(self, pose, commands):
+        x, y, theta = pose.x, pose.y, pose.theta
+        for linear_x, linear_y, angular in commands:
+            theta += angular * SIM_TICK
+            x += (math.cos(theta) * linear_x - math.sin(theta) * linear_y) * SIM_TICK
+            y += (math.sin(theta) * linear_x + math.cos(theta) * linear_y) * SIM_TICK
+        self.x, self.y, self.theta = x, y, math.atan2(math.sin(theta), math.cos(theta))
+        last = commands[-1] if commands else None
+        self.linear_velocity = math.hypot(last[0], last[1]) if last else pose.linear_velocity
+        self.angular_velocity = last[2] if last else pose.angular_velocity

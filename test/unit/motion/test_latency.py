@@ -1,0 +1,159 @@
+"""The executors over a slow network, in a model: the simulator's own step
+function, commands reaching it and poses coming back each some ticks late
+(with jitter, in order, as over TCP), one command worked out per pose that
+comes, as Turtle._run does. Every mode draws the lab's N to the end and on
+its vertices, because it acts on where its commands in flight will take the
+turtle (latency.py); without that, the same links never let it finish."""
+import math
+import random
+
+import pytest
+
+from support.accuracy import primitives_of
+from support.ticks import sample
+from turtle_letters.letters.geometry import PlannedPose
+from turtle_letters.letters.layout import SIM_TICK
+from turtle_letters.letters.primitives import Line, Turn
+from turtle_letters.motion.executors import FeedbackExecutor, SmoothExecutor, TimedExecutor
+from turtle_letters.motion.latency import Ahead, Latency
+from turtlesim_compat.world import CENTRE, Turtle
+
+LIMIT_TICKS = 20000         # a drawing this long has not finished (the N takes about 2,500)
+
+
+class Link:
+    """One way of a slow network: each message `delay` ticks late, give or
+    take `jitter`, never before the one sent before it."""
+
+    def __init__(self, delay, jitter, rng):
+        self.delay, self.jitter, self.rng = delay, jitter, rng
+        self.on_the_way = []        # (tick it arrives, message), in the order sent
+
+    def send(self, message, tick):
+        due = tick + self.delay + self.rng.randint(-self.jitter, self.jitter)
+        last = self.on_the_way[-1][0] if self.on_the_way else 0
+        self.on_the_way.append((max(last, due), message))
+
+    def arrived(self, tick):
+        came = []
+        while self.on_the_way and self.on_the_way[0][0] <= tick:
+            came.append(self.on_the_way.pop(0)[1])
+        return came
+
+
+class NeverEnds(AssertionError):
+    pass
+
+
+def drive(executors, delay, jitter, seed, latency):
+    """Each executor (made by a function of the latency) in turn, over a link
+    each way; the turtle's position at each tick, and the ticks it took."""
+    rng = random.Random(seed)
+    commands, poses = Link(delay, jitter, rng), Link(delay, jitter, rng)
+    turtle = Turtle('t', CENTRE, CENTRE, 0.0)
+    track, tick = [], 0
+    for make in executors:
+        executor = make(latency)
+        command = executor.start(sample(turtle))
+        while command is not None:
+            if latency is not None:
+                latency.sending(command)
+            commands.send(command, tick)
+            pose = None
+            while pose is None:         # the controller waits for the next pose
+                for came in commands.arrived(tick):
+                    turtle.command(*came, now=tick * SIM_TICK)
+                turtle.step(now=tick * SIM_TICK)
+                track.append((turtle.x, turtle.y))
+                poses.send(sample(turtle), tick)
+                tick += 1
+                came = poses.arrived(tick)
+                pose = came[0] if came else None
+                # poses that came together: one command each, in their order
+                poses.on_the_way[0:0] = [(tick, extra) for extra in came[1:]]
+                if tick > LIMIT_TICKS:
+                    raise NeverEnds(f'not done in {LIMIT_TICKS} ticks')
+            if latency is not None:
+                latency.seen(pose)
+            command = executor.update(pose)
+        commands.send((0.0, 0.0, 0.0), tick)
+    for _ in range(4 * delay + 4 * jitter + 2):     # what is still on its way arrives
+        for came in commands.arrived(tick):
+            turtle.command(*came, now=tick * SIM_TICK)
+        turtle.step(now=tick * SIM_TICK)
+        track.append((turtle.x, turtle.y))
+        tick += 1
+    return track, tick, turtle
+
+
+def the_n():
+    return primitives_of('N', [(CENTRE, CENTRE)], PlannedPose(CENTRE, CENTRE, 0.0))[0]
+
+
+def executors_for(mode):
+    primitives = the_n()
+    if mode == 'timed':
+        return [lambda lat, p=p: TimedExecutor(p, 1.0, 0.25, 'sim', latency=lat)
+                for p in primitives]
+    if mode == 'feedback':
+        return [lambda lat, p=p: FeedbackExecutor(p, 1.0, 0.25, lat) for p in primitives]
+    corners = [(p.x, p.y) for p in primitives if isinstance(p, Line)]
+    return [lambda lat: SmoothExecutor(corners, 1.0, lat)]
+
+
+def worst_vertex(track, mode):
+    corners = [(p.x, p.y) for p in the_n() if isinstance(p, Line)]
+    return max(min(math.dist(corner, at) for at in track) for corner in corners)
+
+
+def plan_ticks(mode):
+    primitives = the_n()
+    lines = sum(abs(p.length) for p in primitives if isinstance(p, Line)) / 1.0
+    turns = sum(abs(p.angle) for p in primitives if isinstance(p, Turn)) / 0.25
+    return (lines if mode == 'smooth' else lines + turns) / SIM_TICK
+
+
+TOLERANCE = {'timed': 0.005, 'feedback': 0.005, 'smooth': 0.01}
+
+
+@pytest.mark.parametrize('mode', ['timed', 'feedback', 'smooth'])
+@pytest.mark.parametrize('delay, jitter', [(0, 0), (1, 0), (2, 1), (3, 2), (5, 2)])
+def test_every_mode_draws_the_n_over_a_slow_network(mode, delay, jitter):
+    """Ticks each way (a tick is 16 ms): up to 80 ms each way with jitter."""
+    for seed in range(2):
+        track, ticks, _ = drive(executors_for(mode), delay, jitter, seed, Latency())
+        assert worst_vertex(track, mode) < TOLERANCE[mode], (seed, worst_vertex(track, mode))
+        # the plan's time, and per stroke what the delay costs: a few round trips
+        assert ticks < plan_ticks(mode) * 1.15 + 12 * (2 * delay + jitter + 4) * 6, ticks
+
+
+@pytest.mark.parametrize('mode, delay', [('timed', 3), ('feedback', 3), ('smooth', 2)])
+def test_without_knowing_the_delay_the_same_links_never_let_a_drawing_end(mode, delay):
+    with pytest.raises(NeverEnds):
+        drive(executors_for(mode), delay, 0, 0, None)
+
+
+def test_the_lag_is_measured_in_poses_and_the_commands_in_flight_are_the_newest():
+    latency = Latency()
+    pose = type('Pose', (), dict(linear_velocity=0.0, angular_velocity=0.0))
+    for command in [(1.0, 0.0, 0.0)] + [(1.0, 0.0, 0.0)] * 3:
+        latency.sending(command)
+        latency.seen(pose)                  # the turtle still stands: not shown yet
+    shown = type('Pose', (), dict(linear_velocity=1.0, angular_velocity=0.0))
+    latency.sending((0.5, 0.0, 0.0))
+    latency.seen(shown)
+    assert latency.lag == 4 and latency.seconds() == pytest.approx(5 * SIM_TICK)
+    assert latency.in_flight() == [(1.0, 0.0, 0.0)] * 3 + [(0.5, 0.0, 0.0)]
+    assert latency.in_flight(since=4) == [(0.5, 0.0, 0.0)]
+
+
+def test_ahead_moves_as_turtlesim_does_turn_first_then_along_the_new_heading():
+    pose = type('Pose', (), dict(x=1.0, y=1.0, theta=0.0, linear_velocity=0.0,
+                                 angular_velocity=0.0))
+    turtle = Turtle('t', 1.0, 1.0, 0.0)
+    commands = [(1.0, 0.0, 2.0), (0.5, 0.2, -1.0), (1.0, 0.0, 0.0)]
+    for command in commands:
+        turtle.command(*command, now=0.0)
+        turtle.step(now=0.0)
+    ahead = Ahead(pose, commands)
+    assert (ahead.x, ahead.y, ahead.theta) == pytest.approx((turtle.x, turtle.y, turtle.theta))
