@@ -14,7 +14,7 @@
   of the bench's own, as Gradescope's container would hold it): the
   seconds to build and launch, the steps it wraps; and the sandbox made,
   used once and removed.
-- The cost of owning the world: the grader's roscore and simulator for one
+- The cost of owning the world: the grader's master and simulator for one
   student started (to the simulator's first turtle), then their CPU (% of
   a core) and memory over WORLD_WATCH s with the turtle standing, as while
   a package builds its nodes or waits for the key.
@@ -236,7 +236,7 @@ def grading_lines(results):
         if worlds:
             ups = ', '.join(f"{w['up_s']:.1f}" for w in worlds)
             lines.append(
-                f"the grader's own world per student (roscore and the simulator): up in {ups} s; "
+                f"the grader's own world per student (rosmaster and the simulator): up in {ups} s; "
                 f"idle "
                 f"{statistics.median(w['cpu_pct'] for w in worlds):.1f}% of a core, "
                 f"{statistics.median(w['mib'] for w in worlds):.0f} MiB (medians)")

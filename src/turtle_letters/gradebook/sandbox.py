@@ -1,6 +1,6 @@
 """Where a submission's code runs, and nothing of it outside: a network
-namespace of its own with loopback only (so its roscore is its own, on the
-usual port), and in it Debian's bubblewrap with the rules in RULES, run as
+namespace of its own with loopback only (so the master the grader runs
+for it is its own, on the usual port), and in it Debian's bubblewrap with the rules in RULES, run as
 an unprivileged user of its own (as_user), in a cgroup of its own with
 LIMITS and the cores it was given. The grader's watcher (watch.py) joins
 the namespace, not the sandbox.

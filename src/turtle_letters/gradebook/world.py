@@ -1,5 +1,5 @@
 """The world a submission is graded on, and the grader's own: a ROS master
-(roscore) and the bundled simulator, started beside the sandbox in its
+(rosmaster) and the bundled simulator, started beside the sandbox in its
 network namespace, as a user the submission is not (the sandbox's world_user).
 The submission's nodes reach them over the network, as ROS lets them; the
 simulator's account of what it drew (sim/.../record.py) comes to the grader
@@ -55,7 +55,7 @@ def stand_in_started(folder):
 
 
 class World:
-    """roscore and the simulator for one sandbox (`box`); `events` is the
+    """rosmaster and the simulator for one sandbox (`box`); `events` is the
     simulator's record as it comes, one dict a line ('k', 't', ...)."""
 
     def __init__(self, box):
@@ -77,11 +77,16 @@ class World:
 
     def start(self):
         """Starts both and waits for the simulator's turtle1: the world is up."""
+        if not os.path.isdir(SIM_FOLDER):
+            raise WorldError(f'the bundled simulator is not at {SIM_FOLDER}: grade from the '
+                             f"package's checkout (make build), not from an install space")
         os.mkdir(self.home, 0o700)
         os.chown(self.home, self.user, self.user)
         log = open(os.path.join(self.home, 'world.log'), 'wb')
         port = self.box.master_uri.rsplit(':', 1)[1]
-        self.master = self._started(['roscore', '-p', port], log)
+        # rosmaster itself, not roscore: roscore's roslaunch would leave its
+        # children for init to reap, and none but rosmaster is needed
+        self.master = self._started(['rosmaster', '--core', '-p', port, '-w', '3'], log)
         read_end, write_end = os.pipe()
         env = dict(self._env(), TURTLESIM_RECORD_FD=str(write_end))
         self.simulator = self._started(
@@ -143,9 +148,8 @@ class World:
             return ''
 
     def stop(self):
-        """Ends both, and what roscore started (roslaunch gives each node a
-        session of its own: only their user, in the sandbox's namespace,
-        finds them all); the record read to its end."""
+        """Ends both (and anything else of their user in the sandbox's
+        namespace); the record read to its end."""
         for process in (self.simulator, self.master):
             if process is not None and process.poll() is None:
                 try:
