@@ -160,7 +160,7 @@ class ViewerInABrowser(unittest.TestCase):
         """The bundled simulator says what ink it laid: a 1-px line at 2.5 m/s,
         a 3-px one at 1 m/s, and a pen-up teleport that lands on ink and jumps
         away (no line), each on the page as on turtlesim's own canvas."""
-        if ('/turtlesim/ink', 'std_msgs/String') not in rospy.get_published_topics():
+        if ['/turtlesim/ink', 'std_msgs/String'] not in rospy.get_published_topics():
             self.skipTest('the real turtlesim publishes no ink; the page rebuilds from poses')
         pen = rospy.ServiceProxy('/turtle1/set_pen', SetPen)
         teleport = rospy.ServiceProxy('/turtle1/teleport_absolute', TeleportAbsolute)

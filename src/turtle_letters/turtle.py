@@ -119,9 +119,9 @@ class Turtle:
             sent = STOP if control.paused else command
             driver.publish(sent)
             watch.sent(sent)
-            latency.sending(sent)
+            latency.sending(sent, time.monotonic())
             pose = driver.poses.next()
-            latency.seen(pose)
+            latency.seen(pose, time.monotonic())
             watch.remembered = max(8, latency.lag + 8)     # a late command still counts
             now = time.monotonic()
             deadline += (now - last) if control.paused else 0.0

@@ -38,6 +38,7 @@ HEADING_TOLERANCE = 1e-4    # rad
 # done this close to it, the turtle is within a few mm of it.
 LATE_POSITION_TOLERANCE, LATE_HEADING_TOLERANCE = 1e-3, 1e-3
 TURN_PER_TICK = 0.05        # rad: smooth mode turns at most 3.1 rad/s
+SHARP = 0.1                 # rad: over a slow network, smooth mode waits at a vertex turning more
 ON_COURSE = 1e-5            # rad: smooth mode holds its command while it faces the vertex this closely
 
 
@@ -138,7 +139,7 @@ class TimedExecutor:
         """Stops sent before a standing pose surely shows them: over a slow
         network, one might show a stop from before our last commands."""
         lag = self.latency.lag if self.latency is not None else 0
-        return lag + self.latency.spread + 2 if lag else 0
+        return self.latency.most + 2 if lag else 0
 
 
 class FeedbackExecutor:
@@ -220,33 +221,43 @@ class SmoothExecutor:
         self.points = list(points)
         self.step = linear_speed * SIM_TICK
         self.next = 0           # index of the vertex to reach next
+        self.came_from = None   # where the turtle stood at the start
 
     def start(self, pose) -> Optional[Command]:
+        self.came_from = (pose.x, pose.y)
         return self.update(pose)
+
+    def _turns_at(self, i) -> bool:
+        """Whether the line turns at vertex `i` by more than SHARP (the last always does)."""
+        if i + 1 >= len(self.points) or (i == 0 and self.came_from is None):
+            return True
+        before = self.points[i - 1] if i else self.came_from
+        here, after = self.points[i], self.points[i + 1]
+        return abs(wrap(math.atan2(after[1] - here[1], after[0] - here[0]) -
+                        math.atan2(here[1] - before[1], here[0] - before[0]))) > SHARP
 
     def update(self, pose) -> Optional[Command]:
         # Over a slow network: the pose its commands in flight lead to; the
         # more the delay varies, the more gently a vertex is come to (a late
-        # command is used twice, an overtaken one never), and the last is
-        # reached once the late pose shows it too.
-        near, gentle, seen = POSITION_TOLERANCE, 0, pose
+        # command is used twice, an overtaken one never), and a vertex where
+        # the line turns is left only once the late pose shows it reached.
+        near, gentle, seen, late = POSITION_TOLERANCE, 0, pose, False
         if self.latency is not None and self.latency.lag:
             pose = Ahead(pose, self.latency.in_flight())
-            near, gentle = LATE_POSITION_TOLERANCE, self.latency.spread
+            near, gentle, late = LATE_POSITION_TOLERANCE, self.latency.spread, True
         x, y = pose.x, pose.y
         while self.next < len(self.points) and math.hypot(
                 self.points[self.next][0] - x, self.points[self.next][1] - y) < near:
+            vertex = self.points[self.next]
+            if late and self._turns_at(self.next) and \
+                    math.hypot(vertex[0] - seen.x, vertex[1] - seen.y) >= near:
+                return STOP     # there, by the guess: wait for the pose to show it
             self.next += 1
         if self.next == len(self.points):
-            last = self.points[-1]
-            if math.hypot(last[0] - seen.x, last[1] - seen.y) < near:
-                return None
-            self.next -= 1      # not there yet, whatever was guessed
+            return None
         vx, vy = self.points[self.next]
         dx, dy = vx - x, vy - y
         distance = math.hypot(dx, dy)
-        if distance < near:
-            return STOP         # on the last vertex, by the guess: wait for the pose to show it
         turn = _clamp(wrap(math.atan2(vy - y, vx - x) - pose.theta), TURN_PER_TICK)
         step = self.step
         if gentle and distance < (2 + gentle) * step:

@@ -2,9 +2,11 @@
 still on their way will do. No ROS here.
 
 One command is sent per pose. With nothing in between, the pose after a
-command shows it (turtlesim reports the velocities it moved with). Over a
-slow network a command shows `lag` poses later: the last `lag` commands
-sent are in flight, and each will still move the turtle a tick. The
+command shows it (turtlesim reports the velocities it moved with), a tick
+after it was sent. Over a slow network a command shows `lag` ticks later
+than that: the last `lag` commands sent are in flight, and each will still
+move the turtle a tick. The lag is measured in time, from when a command
+unlike those before it is sent to when a pose first shows it. The
 executors act on where those commands will take the turtle (`ahead`), not
 on where the late pose says it was: a loop that waits for its own commands
 to show oscillates around its target and never settles.
@@ -44,28 +46,33 @@ class Latency:
         self.sent = deque(maxlen=REMEMBERED)
         self.lags = deque(maxlen=SAMPLES)
         self.count = 0
-        self.waiting = None     # (number, command) of a change sent and not yet shown
+        self.waiting = None     # (number, time, command) of a change sent and not yet shown
 
-    def sending(self, command):
+    def sending(self, command, now):
         """A command sent. One unlike any of the last REMEMBERED, as a pose
         reports them, is timed: the first pose like it shows it."""
         command = tuple(command)
         if self.waiting is not None and self.count - self.waiting[0] > GIVE_UP:
             self.waiting = None         # never shown (another came first): measure anew
         if self.waiting is None and not any(_alike(command, sent) for sent in self.sent):
-            self.waiting = (self.count, command)
+            self.waiting = (self.count, now, command)
         self.sent.append(command)
         self.count += 1
 
-    def seen(self, pose):
-        if self.waiting is not None and shows(pose, self.waiting[1]):
-            self.lags.append(self.count - self.waiting[0] - 1)
+    def seen(self, pose, now):
+        if self.waiting is not None and shows(pose, self.waiting[2]):
+            self.lags.append(max(0, round((now - self.waiting[1]) / SIM_TICK) - 1))
             self.waiting = None
 
     @property
     def lag(self) -> int:
-        """Poses a command takes to show beyond the next one (0: no delay)."""
+        """Ticks a command takes to show beyond the next one (0: no delay)."""
         return int(statistics.median(self.lags)) if self.lags else 0
+
+    @property
+    def most(self) -> int:
+        """The longest lag measured lately."""
+        return max(self.lags) if self.lags else 0
 
     @property
     def spread(self) -> int:

@@ -57,7 +57,7 @@ def drive(executors, delay, jitter, seed, latency):
         command = executor.start(sample(turtle))
         while command is not None:
             if latency is not None:
-                latency.sending(command)
+                latency.sending(command, tick * SIM_TICK)
             commands.send(command, tick)
             pose = None
             while pose is None:         # the controller waits for the next pose
@@ -74,7 +74,7 @@ def drive(executors, delay, jitter, seed, latency):
                 if tick > LIMIT_TICKS:
                     raise NeverEnds(f'not done in {LIMIT_TICKS} ticks')
             if latency is not None:
-                latency.seen(pose)
+                latency.seen(pose, tick * SIM_TICK)
             command = executor.update(pose)
         commands.send((0.0, 0.0, 0.0), tick)
     for _ in range(4 * delay + 4 * jitter + 2):     # what is still on its way arrives
@@ -117,14 +117,15 @@ TOLERANCE = {'timed': 0.005, 'feedback': 0.005, 'smooth': 0.01}
 
 
 @pytest.mark.parametrize('mode', ['timed', 'feedback', 'smooth'])
-@pytest.mark.parametrize('delay, jitter', [(0, 0), (1, 0), (2, 1), (3, 2), (5, 2)])
+@pytest.mark.parametrize('delay, jitter', [(0, 0), (1, 0), (2, 1), (3, 2), (5, 3)])
 def test_every_mode_draws_the_n_over_a_slow_network(mode, delay, jitter):
-    """Ticks each way (a tick is 16 ms): up to 80 ms each way with jitter."""
-    for seed in range(2):
+    """Ticks each way (a tick is 16 ms): up to 80 ms each way, give or take 48."""
+    for seed in range(3):
         track, ticks, _ = drive(executors_for(mode), delay, jitter, seed, Latency())
         assert worst_vertex(track, mode) < TOLERANCE[mode], (seed, worst_vertex(track, mode))
-        # the plan's time, and per stroke what the delay costs: a few round trips
-        assert ticks < plan_ticks(mode) * 1.15 + 12 * (2 * delay + jitter + 4) * 6, ticks
+        # the plan's time, and what the delay costs: at most 20 round trips a stroke
+        round_trip = 2 * (delay + jitter) + 1
+        assert ticks < plan_ticks(mode) * 1.1 + 6 * 20 * round_trip, (seed, ticks)
 
 
 @pytest.mark.parametrize('mode, delay', [('timed', 3), ('feedback', 3), ('smooth', 2)])
@@ -133,15 +134,15 @@ def test_without_knowing_the_delay_the_same_links_never_let_a_drawing_end(mode, 
         drive(executors_for(mode), delay, 0, 0, None)
 
 
-def test_the_lag_is_measured_in_poses_and_the_commands_in_flight_are_the_newest():
+def test_the_lag_is_measured_in_ticks_and_the_commands_in_flight_are_the_newest():
     latency = Latency()
     pose = type('Pose', (), dict(linear_velocity=0.0, angular_velocity=0.0))
-    for command in [(1.0, 0.0, 0.0)] + [(1.0, 0.0, 0.0)] * 3:
-        latency.sending(command)
-        latency.seen(pose)                  # the turtle still stands: not shown yet
+    for tick, command in enumerate([(1.0, 0.0, 0.0)] * 4):
+        latency.sending(command, tick * SIM_TICK)
+        latency.seen(pose, (tick + 1) * SIM_TICK)   # the turtle still stands: not shown yet
     shown = type('Pose', (), dict(linear_velocity=1.0, angular_velocity=0.0))
-    latency.sending((0.5, 0.0, 0.0))
-    latency.seen(shown)
+    latency.sending((0.5, 0.0, 0.0), 4 * SIM_TICK)
+    latency.seen(shown, 5 * SIM_TICK)               # 5 ticks after the first was sent
     assert latency.lag == 4 and latency.seconds() == pytest.approx(5 * SIM_TICK)
     assert latency.in_flight() == [(1.0, 0.0, 0.0)] * 3 + [(0.5, 0.0, 0.0)]
     assert latency.in_flight(since=4) == [(0.5, 0.0, 0.0)]
