@@ -63,6 +63,34 @@ class SlowNetwork(unittest.TestCase):
     def test_timed(self):
         self.check('timed')
 
+    def test_a_network_over_a_second_late_stops_the_drawing_in_words_that_say_so(self):
+        """Commands and poses 1.5 s late each way: no command shows within the
+        second a turtle may disobey, and the words say the network may be why."""
+        relays = [NodeProcess('turtle_letters', 'delay_relay.py', f'in:={a}', f'out:={b}',
+                              '_delay:=1.5', f'__name:=very_slow_{n}')
+                  for n, (a, b) in enumerate([('/slower/turtle1/cmd_vel', '/turtle1/cmd_vel'),
+                                              ('/turtle1/pose', '/slower/turtle1/pose')])]
+        rospy.ServiceProxy('/reset', Empty)()
+        controller = NodeProcess('turtle_letters', 'turtle_controller.py', '__name:=slower',
+                                 'turtle1/cmd_vel:=/slower/turtle1/cmd_vel',
+                                 'turtle1/pose:=/slower/turtle1/pose')
+        try:
+            wait_until(lambda: 'Ready: publish' in controller.output(), 60,
+                       'the controller ready', controller.output)
+            wait_until(lambda: self.chatter.get_num_connections() > 0, 30, 'it on /chatter')
+            t0 = time.time()
+            self.chatter.publish(String('P'))
+            wait_until(lambda: 'did not move as commanded' in controller.output(), 30,
+                       'the drawing stopped', controller.output)
+            self.assertIn('turtlesim hears it, but none of our commands has shown in its poses '
+                          'yet: the network delays them more than 1 s, or the remaps of cmd_vel '
+                          'and pose are wrong', controller.output())
+            self.poses.wait_until_still(t0, 10, still_for=2.0, what='the turtle stopped')
+        finally:
+            controller.stop()
+            for relay in relays:
+                relay.stop()
+
     def test_feedback(self):
         self.check('feedback')
 

@@ -16,9 +16,7 @@ from .letters.primitives import Line, Turn
 from .motion.control import Cancelled, Control
 from .motion.driver import DrawingAborted
 from .motion.executors import STOP, FeedbackExecutor, SmoothExecutor, StallWatch, TimedExecutor
-from .motion.latency import Latency
-
-DEADLINE_FACTOR, DEADLINE_SLACK = 3.0, 3.0   # a stroke's deadline: this times its time, plus s
+from .motion.latency import Deadline, Latency
 
 
 class Turtle:
@@ -107,9 +105,7 @@ class Turtle:
         driver, control, latency = self.driver, self.control, self.latency
         rospy.loginfo('%s%s: start at %s', self.label, description, pose_text(driver.poses.latest))
         watch = StallWatch(STALL_SECONDS)
-        allowed = DEADLINE_FACTOR * seconds + DEADLINE_SLACK
-        deadline = last = time.monotonic()
-        deadline += allowed
+        deadline = Deadline(seconds, time.monotonic())
         command = executor.start(driver.poses.latest)
         while command is not None:
             if control.cancelled:
@@ -124,15 +120,11 @@ class Turtle:
             latency.seen(pose, time.monotonic())
             watch.remembered = max(8, latency.lag + 8)     # a late command still counts
             now = time.monotonic()
-            deadline += (now - last) if control.paused else 0.0
-            last = now
             if watch.stalled(pose, now):
                 raise DrawingAborted(stall_diagnosis(driver, pose, latency))
-            if now > deadline:
+            if deadline.passed(now, control.paused):
                 driver.stop()
-                raise DrawingAborted(
-                    f"turtle {driver.name} did not reach the stroke's end ({description}) within "
-                    f'{allowed:.0f} s; commands take about {1000 * latency.seconds():.0f} ms to act')
+                raise DrawingAborted(deadline.says(driver.name, description, latency))
             command = executor.update(pose)
         driver.publish(STOP)
         rospy.loginfo('%s%s: end at %s', self.label, description, pose_text(driver.poses.latest))

@@ -24,11 +24,12 @@ def reach_advice():
 
 
 def stall_diagnosis(driver, pose, latency=None):
-    """A turtle that did not move as commanded although its poses arrive
-    (and how late commands act, when they are late)."""
+    """A turtle that did not move as commanded although its poses arrive;
+    how late its commands act, when that is known, or that none has shown."""
     linear_x, linear_y, angular = driver.commanded
-    late = (f' (commands take about {1000 * latency.seconds():.0f} ms to act)'
-            if latency is not None and latency.lag >= 2 else '')
+    late = ''
+    if latency is not None and latency.lag >= 2:
+        late = f' (commands take about {1000 * latency.seconds():.0f} ms to act)'
     seen = (f'turtle {driver.name} did not move as commanded for {STALL_SECONDS:g} s although '
             f'its poses arrive{late}: it moves at {pose.linear_velocity:.2f} m/s and '
             f'{pose.angular_velocity:.2f} rad/s, we command {math.hypot(linear_x, linear_y):.2f} '
@@ -38,6 +39,10 @@ def stall_diagnosis(driver, pose, latency=None):
         return f'{seen}; {", ".join(others)} publish there too: only one node may drive a turtle'
     if driver.cmd_vel_connections() == 0:
         return f'{seen}; turtlesim has not connected to it. {reach_advice()}'
+    if latency is not None and not latency.lags:
+        return (f'{seen}; turtlesim hears it, but none of our commands has shown in its poses '
+                f'yet: the network delays them more than {STALL_SECONDS:g} s, or the remaps of '
+                f'cmd_vel and pose are wrong')
     return f'{seen}; turtlesim hears it: check the remaps of cmd_vel and pose'
 
 

@@ -22,6 +22,7 @@ SAME = 1e-3             # m/s or rad/s: a pose's velocities show a command this 
 REMEMBERED = 64         # commands kept (a lag is at most this)
 SAMPLES = 9             # lags measured, the median of which is the lag
 GIVE_UP = 60            # commands after which a change never seen is no longer waited for
+DEADLINE_FACTOR, DEADLINE_SLACK = 3.0, 3.0   # a stroke's deadline: this times its time, plus s
 
 
 def signature(command):
@@ -111,3 +112,23 @@ class Ahead:
         last = commands[-1] if commands else None
         self.linear_velocity = math.hypot(last[0], last[1]) if last else pose.linear_velocity
         self.angular_velocity = last[2] if last else pose.angular_velocity
+
+
+class Deadline:
+    """A stroke's deadline: DEADLINE_FACTOR times the time it takes, plus
+    DEADLINE_SLACK s, from `now`; time spent paused does not count."""
+
+    def __init__(self, seconds, now):
+        self.allowed = DEADLINE_FACTOR * seconds + DEADLINE_SLACK
+        self.until, self.last = now + self.allowed, now
+
+    def passed(self, now, paused=False) -> bool:
+        if paused:
+            self.until += now - self.last
+        self.last = now
+        return now > self.until
+
+    def says(self, turtle, stroke, latency) -> str:
+        return (f"turtle {turtle} did not reach the stroke's end ({stroke}) within "
+                f'{self.allowed:.0f} s; commands take about {1000 * latency.seconds():.0f} ms '
+                f'to act')

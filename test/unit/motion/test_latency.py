@@ -15,7 +15,7 @@ from turtle_letters.letters.geometry import PlannedPose
 from turtle_letters.letters.layout import SIM_TICK
 from turtle_letters.letters.primitives import Line, Turn
 from turtle_letters.motion.executors import FeedbackExecutor, SmoothExecutor, TimedExecutor
-from turtle_letters.motion.latency import Ahead, Latency
+from turtle_letters.motion.latency import Ahead, Deadline, Latency
 from turtlesim_compat.world import CENTRE, Turtle
 
 LIMIT_TICKS = 20000         # a drawing this long has not finished (the N takes about 2,500)
@@ -45,15 +45,18 @@ class NeverEnds(AssertionError):
     pass
 
 
-def drive(executors, delay, jitter, seed, latency):
+def drive(executors, delay, jitter, seed, latency, seconds=None, adapt=True):
     """Each executor (made by a function of the latency) in turn, over a link
-    each way; the turtle's position at each tick, and the ticks it took."""
+    each way; the turtle's position at each tick, and the ticks it took.
+    With `seconds` (of each stroke), each stroke has its Deadline; without
+    `adapt`, the latency is measured but no executor acts on it."""
     rng = random.Random(seed)
     commands, poses = Link(delay, jitter, rng), Link(delay, jitter, rng)
     turtle = Turtle('t', CENTRE, CENTRE, 0.0)
     track, tick = [], 0
     for make in executors:
-        executor = make(latency)
+        executor = make(latency if adapt else None)
+        deadline = Deadline(seconds.pop(0), tick * SIM_TICK) if seconds else None
         command = executor.start(sample(turtle))
         while command is not None:
             if latency is not None:
@@ -75,6 +78,8 @@ def drive(executors, delay, jitter, seed, latency):
                     raise NeverEnds(f'not done in {LIMIT_TICKS} ticks')
             if latency is not None:
                 latency.seen(pose, tick * SIM_TICK)
+            if deadline is not None and deadline.passed(tick * SIM_TICK):
+                raise NeverEnds(deadline.says('t', type(executor).__name__, latency))
             command = executor.update(pose)
         commands.send((0.0, 0.0, 0.0), tick)
     for _ in range(4 * delay + 4 * jitter + 2):     # what is still on its way arrives
@@ -132,6 +137,16 @@ def test_every_mode_draws_the_n_over_a_slow_network(mode, delay, jitter):
 def test_without_knowing_the_delay_the_same_links_never_let_a_drawing_end(mode, delay):
     with pytest.raises(NeverEnds):
         drive(executors_for(mode), delay, 0, 0, None)
+
+
+def test_a_stroke_that_cannot_end_stops_at_its_deadline_in_words():
+    """The lab's first turn, 6.3 s at 0.25 rad/s, with commands 3 ticks late
+    each way (96 ms there and back) and nothing knowing it: it never ends,
+    and its deadline, 3 x 6.3 + 3 s, says so, with the delay as measured."""
+    with pytest.raises(NeverEnds, match=r"turtle t did not reach the stroke's end "
+                                        r'\(TimedExecutor\) within 22 s; commands take about '
+                                        r'96 ms to act'):
+        drive(executors_for('timed')[:1], 3, 0, 0, Latency(), [math.pi / 2 / 0.25], adapt=False)
 
 
 def test_the_lag_is_measured_in_ticks_and_the_commands_in_flight_are_the_newest():
