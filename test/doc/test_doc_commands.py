@@ -41,6 +41,8 @@ ELSEWHERE = {
     'rostest turtle_letters grade.test controller:="my_lab my_controller.py"':
         "a student's package: test/grade.test with this package's controller",
     'roslaunch turtle_letters classroom.launch grade:=true': 'test/classroom.test',
+    'rosrun turtle_letters delay_relay.py in:=/slow/turtle1/cmd_vel out:=/turtle1/cmd_vel '
+    '_delay:=0.05 _jitter:=0.03': 'test/latency.test runs two such relays, one each way',
     'rosrun turtle_letters grade_class.py SUBMISSIONS --roster ROSTER.csv --out OUT --jobs 2':
         'test/class/test_grade_class.py grades a class so, with --jobs 2',
     'rosrun turtle_letters grade_class.py --one FOLDER --name "Kofi Mensah" --out OUT':
