@@ -64,6 +64,8 @@ def why_stopped(error, driver):
         return str(error)
     if isinstance(error, rospy.ServiceException):
         return f'a turtlesim service failed: {error}'
+    if isinstance(error, rospy.ROSInterruptException):     # Ctrl-C mid-call
+        return 'this node is shutting down'
     rospy.logerr('The drawing failed on an error of turtle_letters itself; please report '
                  'it with this traceback:\n%s', traceback.format_exc())
     return f'{type(error).__name__}: {error}'

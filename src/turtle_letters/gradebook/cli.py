@@ -345,8 +345,22 @@ def _force(place):
         with place.lock:        # every sandbox whole: none is being made or removed now
             for box in place.boxes:
                 box.__exit__(None, None, None)
+            _reap_children()
             os._exit(128 + number)
     return force
+
+
+def _reap_children(seconds=2.0):
+    """Waits for the children just killed, so that none is left for init to
+    reap (a slow init shows them a while longer)."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        try:
+            pid, _ = os.waitpid(-1, os.WNOHANG)
+        except ChildProcessError:
+            return
+        if pid == 0:
+            time.sleep(0.01)
 
 
 def write_class(out, rows, title):
