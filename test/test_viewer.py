@@ -21,7 +21,7 @@ from PyQt5.QtGui import QColor, QImage
 from geometry_msgs.msg import Twist, Vector3
 from sensor_msgs.msg import Image
 from std_msgs.msg import String
-from std_srvs.srv import Trigger
+from std_srvs.srv import Empty, Trigger
 from turtlesim.msg import Pose
 from turtlesim.srv import SetPen, TeleportAbsolute
 
@@ -186,6 +186,57 @@ class ViewerInABrowser(unittest.TestCase):
         self.assertGreater(near_share(page, simulator), AGREE, 'page ink turtlesim has not')
         red = {(x, y) for x, y in page if 45 < x < 180 and abs(y - (499 - 45)) <= 1}
         self.assertGreater(len(red), 120, 'the 1-px line at 2.5 m/s, whole')
+
+    def test_2c_rebuilt_from_poses_as_for_the_real_turtlesim(self):
+        """A viewer that does not take the simulator's ink (~ink false) reads
+        the pens from poses and the colour under the turtle, as it must with
+        the real turtlesim: a 3-px line at 2.5 m/s, a 1-px one at 1 m/s, a
+        pen-up teleport onto ink and away, and a pen-down one, on its
+        /canvas.png as on turtlesim's own canvas."""
+        port = free_port()
+        posed = NodeProcess('turtle_letters', 'view.py', f'_port:={port}', '_ink:=false',
+                            '__name:=posed_view')
+        try:
+            wait_until(lambda: self.serving(f'http://127.0.0.1:{port}/') and connections(
+                '/posed_view', '/turtle1/color_sensor', 'i'), 30,
+                'the viewer from poses serving, and on the colour sensor', posed.output)
+            rospy.ServiceProxy('/clear', Empty)()
+            pen = rospy.ServiceProxy('/turtle1/set_pen', SetPen)
+            teleport = rospy.ServiceProxy('/turtle1/teleport_absolute', TeleportAbsolute)
+            cmd_vel = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=10)
+            wait_until(lambda: cmd_vel.get_num_connections() > 0, 10, 'turtlesim on cmd_vel')
+            for (x, y), rgb, width, speed in (((1.0, 6.0), (255, 0, 0), 3, 2.5),
+                                              ((1.0, 7.0), (0, 160, 0), 1, 1.0)):
+                pen(0, 0, 0, 3, 1)
+                teleport(x, y, 0.0)
+                rospy.sleep(0.3)
+                pen(*rgb, width, 0)
+                drive(cmd_vel, speed, 3.0 / speed)
+            pen(0, 0, 0, 3, 1)
+            teleport(2.0, 6.0, 0.0)         # onto the red line, pen up
+            rospy.sleep(0.3)
+            teleport(9.0, 9.0, 0.0)         # and away
+            rospy.sleep(0.3)
+            pen(255, 255, 255, 3, 0)
+            teleport(9.0, 4.0, 0.0)         # pen down: a white line
+            rospy.sleep(1.0)
+            saved = rospy.ServiceProxy('/turtlesim/save_canvas', Trigger)()
+            self.assertTrue(saved.success, saved.message)
+            turtle = (9.0 * 45, 499 - 4.0 * 45)
+            simulator = ink(QImage(saved.message), turtle)
+
+            def rebuilt():
+                png = QImage()
+                png.loadFromData(urllib.request.urlopen(
+                    f'http://127.0.0.1:{port}/canvas.png', timeout=5).read(), 'PNG')
+                return ink(png, turtle)
+            wait_until(lambda: near_share(simulator, rebuilt()) > AGREE, 10,
+                       "turtlesim's ink rebuilt from poses", lambda: near_share(simulator,
+                                                                                rebuilt()))
+            self.assertGreater(near_share(rebuilt(), simulator), AGREE,
+                               'ink rebuilt from poses that turtlesim has not')
+        finally:
+            posed.stop()
 
     def test_3_each_turtle_by_name_and_each_drawing_in_the_table(self):
         self.assertEqual(self.names(), ['turtle1'])

@@ -166,7 +166,7 @@ def _size(value, font):
     return size
 
 
-def _boolean(value, font=None):
+def boolean(value, font=None):
     if not isinstance(value, bool):
         raise ValueError('true or false')
     return value
@@ -222,7 +222,7 @@ PARAMETERS = (
               "ccw: always counter-clockwise, as the lab; shortest: the shorter way",
               _one_of(*TURN_DIRECTIONS)),
     Parameter('typing', 'bool', 'false', '', 'draw every letter or digit heard on chatter',
-              _boolean),
+              boolean),
     Parameter('text', 'str', '', '', 'a word drawn once, as soon as the pose is known', _text),
     Parameter('pen', 'str', '179 184 255 3', 'px',
               "ink: r g b (0-255) and width; turtlesim's own pen by default", _pen),
@@ -232,7 +232,7 @@ PARAMETERS = (
     Parameter('x', 'float', '', 'm', 'where a spawned turtle starts; "": a free place', _place),
     Parameter('y', 'float', '', 'm', 'where a spawned turtle starts; "": a free place', _place),
     Parameter('parallel', 'bool', 'false', '',
-              'a word is drawn by one turtle per character, all at once', _boolean),
+              'a word is drawn by one turtle per character, all at once', boolean),
     Parameter('svg_dirs', 'str', '', '',
               'the folders whose SVG files may be drawn, separated by ":"; "": the '
               "package's doc/ and the folder roslaunch was started in", _folders),

@@ -1,5 +1,6 @@
 """Ticks of a turtlesim as the viewer and the executors hear them, for
 their unit tests. No ROS here."""
+import math
 import struct
 from typing import NamedTuple
 
@@ -25,7 +26,11 @@ def sample(turtle):
 
 
 def drive(trails, name, points, colour):
-    """A tick per point: the pose, then the colour under it, as turtlesim publishes them."""
+    """A tick per point, each step driven at the speed it takes in a tick:
+    the pose, then the colour under it, as turtlesim publishes them."""
+    last = trails.turtles.get(name)
     for x, y in points:
-        trails.pose(name, x, y, 0.0)
+        step = (x - last[0], y - last[1]) if last else (0.0, 0.0)
+        trails.pose(name, x, y, math.atan2(step[1], step[0]), math.hypot(*step) / 0.016)
         trails.colour(name, colour)
+        last = (x, y)

@@ -30,7 +30,7 @@ PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors'
         'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
         'grading.recognition', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',
         'gradebook.reports', 'gradebook.submission', 'gradebook.failures', 'grading.files',
-        'grading.procstat', 'actions.jobs', 'actions.progress', 'viewer.trails', 'viewer.picture',
+        'grading.procstat', 'actions.jobs', 'actions.progress', 'viewer.trails', 'viewer.pens', 'viewer.picture',
         'viewer.server'}
 ROS = ('rospy', 'rosgraph', 'actionlib', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')
 

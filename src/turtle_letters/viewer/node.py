@@ -2,14 +2,15 @@
 
 It rebuilds the canvas (trails.py) from the ink the bundled simulator says
 it laid (its `ink` topic), or, with the real turtlesim, which publishes no
-ink, from every turtle's pose and color_sensor; and it
+ink, from every turtle's pose and color_sensor (pens.py); and it
 serves it (server.py) as a page at http://ADDRESS:PORT/, with each turtle,
 each student's drawing from their draw action's feedback, and the room's
 scoreboard when there is one. It publishes the canvas on `canvas/image`
 (sensor_msgs/Image, rgb8) for image_view, rqt_image_view and rviz.
 
 Parameters (VIEWING): ~port (int, 8080), ~address (str, '127.0.0.1'; ''
-for every interface), ~image_rate (Hz, 5.0), ~max_pages (int, 120).
+for every interface), ~image_rate (Hz, 5.0), ~max_pages (int, 120), ~ink
+(bool, true; false rebuilds from poses even where the simulator says its ink).
 """
 
 import json
@@ -26,14 +27,14 @@ from std_msgs.msg import String
 
 from ..motion.driver import CANVAS_WORDS
 from ..letters.layout import CANVAS_PIXELS
-from ..settings import Parameter, ParameterError, positive, read_parameter
+from ..settings import Parameter, ParameterError, boolean, positive, read_parameter
 from .picture import Painting
 from .server import application
 from .trails import DEFAULT_BACKGROUND, Trails
 from .drawings import Drawings
 
 LOOK_PERIOD = 1.0       # s between looks for turtles and drawings come or gone
-POSE = struct.Struct('<3f')     # turtlesim/Pose begins x, y, theta (float32)
+POSE = struct.Struct('<4f')     # turtlesim/Pose begins x, y, theta, linear_velocity (float32)
 COLOR = struct.Struct('<3B')    # turtlesim/Color: r, g, b (uint8)
 
 
@@ -63,14 +64,17 @@ VIEWING = {p.name: p for p in (
               positive),
     Parameter('max_pages', 'int', '120', '', 'pages open at once; past it, a polite refusal',
               _pages),
+    Parameter('ink', 'bool', 'true', '', "draw the ink the bundled simulator says it laid "
+              "(false: rebuild it from poses, as for the real turtlesim)", boolean),
 )}
 
 
 class View:
     """What the page shows: the trails, their painting, the drawings and the scoreboard."""
 
-    def __init__(self, background):
+    def __init__(self, background, use_ink=True):
         self.trails = Trails(background)
+        self.use_ink = use_ink
         self.painting = Painting(self.trails)
         self.drawings = Drawings()
         self.scoreboard = ''
@@ -91,7 +95,8 @@ class View:
             return
         self.simulators = set(dict(services).get('/spawn', []))
         for simulator in sorted(self.simulators):
-            if topics.get(f'{simulator}/ink') == 'std_msgs/String' and self.ink is None:
+            if (topics.get(f'{simulator}/ink') == 'std_msgs/String' and self.ink is None
+                    and self.use_ink):
                 self.ink = rospy.Subscriber(f'{simulator}/ink', String, lambda m: self.trails.ink(
                     _lines(m.data)), queue_size=1000)
         for topic, kind in topics.items():
@@ -119,7 +124,8 @@ class View:
         if self.trails.inked:       # the ink says so itself, with the background
             return
         if what and message._connection_header.get('callerid') in self.simulators:
-            (self.trails.clear if what == 'clear' else self.trails.reset)()
+            background = _background(self.master)   # a clear re-reads it, as turtlesim does
+            (self.trails.clear if what == 'clear' else self.trails.reset)(background)
 
 
 def _lines(text):
@@ -158,7 +164,7 @@ def main():
     except ParameterError as e:
         rospy.logfatal('%s: %s', rospy.get_name(), e)
         raise SystemExit(2)
-    view = View(_background(rosgraph.Master(rospy.get_name())))
+    view = View(_background(rosgraph.Master(rospy.get_name())), settings['ink'])
     web = os.path.join(rospkg.RosPack().get_path('turtle_letters'), 'web')
     app, _ = application(view, web, settings['max_pages'])
     try:

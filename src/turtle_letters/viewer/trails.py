@@ -2,34 +2,17 @@
 it is the ink the simulator laid, as it says on its `ink` topic: each
 segment with its colour and width, each clear and reset with the
 background (`ink()`). With the real turtlesim, which publishes no ink, it
-is rebuilt from what it does publish: each turtle's pose, and its
-color_sensor, the colour under it. That colour is the pen's while the pen
-is down and the background's while it is up, so a step ending on another
-colour than the background is a stroke in that colour. No ROS here.
-
-turtlesim reads the colour before it draws the tick's own line, so what it
-reads is the line before, which a 3-px pen covers while a tick's step is
-under 1.5 px (up to about 2 m/s): a pen lifted or put down shows a tick
-late, and about one reading in twenty on a straight line falls on a pixel
-the line missed, a tick-long gap that the strokes' square caps close. A
-stroke runs from where the last colour was read to the newest pose. The
-width is not published: such strokes are PEN_WIDTH wide, turtlesim's default. A
-pen-up step that ends on another line reads its colour and retraces a tick
-of it.
+is read from what it does publish, each turtle's pose and the colour under
+it, by a PenReader a turtle (pens.py). No ROS here.
 """
 import math
 import threading
-from typing import Dict, List, NamedTuple, Optional, Tuple
+from typing import Dict, List, NamedTuple, Tuple
 
-from ..letters.layout import CANVAS_PIXELS, PIXELS_PER_METRE
+from .pens import DEFAULT_WIDTH as PEN_WIDTH, Doubts, PenReader, Pixels, to_pixels
 
-PEN_WIDTH = 3                   # px: turtlesim's default pen
 DEFAULT_BACKGROUND = (69, 86, 255)
-
-
-def to_pixels(x, y):
-    """World metres to canvas pixels (y grows downwards), as turtlesim maps them."""
-    return x * PIXELS_PER_METRE, (CANVAS_PIXELS - 1) - y * PIXELS_PER_METRE
+DEFAULT_PEN = (179, 184, 255)
 
 
 class Stroke(NamedTuple):
@@ -46,8 +29,6 @@ class Turtle(NamedTuple):
     x: float
     y: float
     theta: float
-    drawn_to: Tuple[float, float]       # where its last stroke (or pen-up step) ended
-    colour: Optional[Tuple[int, int, int]] = None   # the last colour read under it
 
 
 class Trails:
@@ -62,31 +43,38 @@ class Trails:
         self.folded = 0
         self.clears = 0
         self.inked = False      # strokes come from the simulator's ink, not the colour under it
+        self.readers: Dict[str, PenReader] = {}
+        self.pixels = None      # the canvas pixel by pixel, once a turtle is read by its pen
+        self.doubts = Doubts()
         self.lock = threading.Lock()
 
-    def pose(self, name, x, y, theta):
-        """Turtle `name` at a pose; a pose that is not all finite numbers
-        (a NaN from a broken node) is no place, and leaves it where it was."""
-        if not all(math.isfinite(v) for v in (x, y, theta)):
+    def pose(self, name, x, y, theta, speed=0.0):
+        """Turtle `name` at a pose, commanded `speed` m/s; a pose that is not
+        all finite numbers (a NaN from a broken node) is no place, and
+        leaves it where it was."""
+        if not all(math.isfinite(v) for v in (x, y, theta, speed)):
             return
         with self.lock:
-            turtle = self.turtles.get(name)
-            drawn_to = turtle.drawn_to if turtle else (x, y)
-            colour = turtle.colour if turtle else None
-            self.turtles[name] = Turtle(x, y, theta, drawn_to, colour)
+            self.turtles[name] = Turtle(x, y, theta)
+            reader = self.readers.get(name)
+            if reader is None:
+                self.readers[name] = PenReader(x, y, DEFAULT_PEN)
+            else:
+                reader.pose(x, y, theta, speed)
 
     def colour(self, name, rgb):
-        """The colour under turtle `name` now: a stroke to its newest pose,
-        unless that colour is the background (its pen is up)."""
+        """The colour under turtle `name` now: the strokes it shows drawn."""
         rgb = tuple(int(c) for c in rgb)
         with self.lock:
-            turtle = self.turtles.get(name)
-            if turtle is None:
+            reader = self.readers.get(name)
+            if reader is None or self.inked:
                 return
-            here = (turtle.x, turtle.y)
-            if rgb != self.background and here != turtle.drawn_to and not self.inked:
-                self.strokes.append(Stroke(name, rgb, *turtle.drawn_to, *here))
-            self.turtles[name] = turtle._replace(drawn_to=here, colour=rgb)
+            if self.pixels is None:
+                self.pixels = Pixels(self.background)
+            for line in reader.read(rgb, self.pixels, self.doubts, self.background):
+                self.pixels.paint(line)
+                x0, y0, x1, y1, colour, width = line
+                self.strokes.append(Stroke(name, colour, x0, y0, x1, y1, width))
 
     def ink(self, lines):
         """The simulator's own account of a tick (its `ink` topic): the
@@ -96,10 +84,7 @@ class Trails:
             for line in lines:
                 kind = line.get('k')
                 if kind in ('clear', 'reset'):
-                    self.background = tuple(line.get('background', self.background))
-                    self.strokes = []
-                    self.clears += 1
-                    self.folded = 0
+                    self._cleared(line.get('background'))
                     if kind == 'reset':
                         self.turtles = {}
                 elif kind == 'kill':
@@ -113,20 +98,29 @@ class Trails:
         """Turtle `name` was killed: its strokes stay, as on turtlesim's canvas."""
         with self.lock:
             self.turtles.pop(name, None)
+            self.readers.pop(name, None)
 
-    def clear(self):
+    def clear(self, background=None):
+        """turtlesim cleared its canvas (to `background`, if it is known)."""
         with self.lock:
-            self.strokes = []
-            self.clears += 1
-            self.folded = 0
+            self._cleared(background)
 
-    def reset(self):
+    def reset(self, background=None):
         """turtlesim reset: the canvas cleared and every turtle gone
         (turtle1 comes back by its pose)."""
         with self.lock:
-            self.strokes, self.turtles = [], {}
-            self.clears += 1
-            self.folded = 0
+            self._cleared(background)
+            self.turtles, self.readers = {}, {}
+
+    def _cleared(self, background):
+        self.background = tuple(background or self.background)
+        self.strokes, self.folded = [], 0
+        self.clears += 1
+        self.doubts.clear()
+        if self.pixels is not None:
+            self.pixels.fill(self.background)
+        for reader in self.readers.values():
+            reader.steps, reader.jump = [], None
 
     def turtles_now(self):
         with self.lock:

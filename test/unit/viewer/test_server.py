@@ -97,14 +97,18 @@ async def _page(url, messages=1):
     return connection, got
 
 
+def line(room, x0, x1):
+    """A stroke along y = 1 m in the default pen, as the bundled simulator says it laid it."""
+    room.trails.ink([dict(k='move', turtle='/turtle1', ink=[[x0, 1.0, x1, 1.0, *PEN, 3]])])
+
+
 def test_a_page_gets_a_snapshot_then_only_what_changed(room):
     room.trails.pose('/turtle1', 1.0, 1.0, 0.0)
-    room.trails.colour('/turtle1', PEN)
 
     async def look():
         connection, (snapshot,) = await _page(room.url)
         room.trails.pose('/turtle1', 2.0, 1.0, 0.5)
-        room.trails.colour('/turtle1', PEN)
+        line(room, 1.0, 2.0)
         update = json.loads(await connection.read_message())
         connection.write_message('{"publish": "/turtle1/cmd_vel"}')     # read-only: ignored
         await asyncio.sleep(0.2)
@@ -143,8 +147,9 @@ def test_a_page_that_stops_reading_is_dropped_and_the_others_go_on(room, monkeyp
         heard, deadline = 0, time.monotonic() + 8
         while time.monotonic() < deadline:
             for i in range(1000):   # strokes enough to fill the stalled page's socket buffers
-                room.trails.pose('/turtle1', 1 + (heard * 1000 + i) % 900 / 100, 1.0, 0.0)
-                room.trails.colour('/turtle1', PEN)
+                x = 1 + (heard * 1000 + i) % 900 / 100
+                room.trails.pose('/turtle1', x, 1.0, 0.0)
+                line(room, x - 0.01, x)
             message = await asyncio.wait_for(connection.read_message(), 2)
             heard += message is not None
         return heard
@@ -194,7 +199,7 @@ def test_strokes_every_reader_holds_are_folded_and_a_page_behind_them_starts_aga
         connection, _ = await _page(room.url)
         for i in range(3000):
             room.trails.pose('/turtle1', 1 + i % 900 / 100, 1.0, 0.0)
-            room.trails.colour('/turtle1', PEN)
+            line(room, 0.99 + i % 900 / 100, 1 + i % 900 / 100)
             if i % 100 == 0:
                 await connection.read_message()
         deadline = time.monotonic() + 5

@@ -1,5 +1,6 @@
-"""The canvas rebuilt from poses and the colour under each turtle: strokes
-where the colour is a pen's, none where it is the background's."""
+"""The canvas rebuilt from poses and the colour under each turtle (the
+whole model against turtlesim's canvas is test_pens.py), and from the
+bundled simulator's ink."""
 import pytest
 
 from support.ticks import drive
@@ -16,39 +17,39 @@ def test_a_pen_down_leaves_a_stroke_per_tick_in_its_colour():
                               Stroke('turtle1', PEN, 1.5, 1.0, 2.0, 1.0)]
 
 
-def test_a_pen_up_step_reads_the_background_and_leaves_nothing():
+def test_steps_over_the_background_wait_and_at_rest_the_background_lifts_them():
     trails = Trails()
-    drive(trails, 'turtle1', [(1.0, 1.0), (2.0, 1.0)], DEFAULT_BACKGROUND)
-    drive(trails, 'turtle1', [(3.0, 1.0)], RED)
-    assert trails.strokes == [Stroke('turtle1', RED, 2.0, 1.0, 3.0, 1.0)]
+    drive(trails, 'turtle1', [(1.0, 1.0), (1.02, 1.0), (1.04, 1.0)], DEFAULT_BACKGROUND)
+    assert trails.strokes == []             # too fast to show, or up: not yet told
+    drive(trails, 'turtle1', [(1.04, 1.0), (1.04, 1.0)], DEFAULT_BACKGROUND)
+    assert trails.strokes == []             # at rest on the background: it was up
+    drive(trails, 'turtle1', [(1.06, 1.0)], DEFAULT_BACKGROUND)
+    drive(trails, 'turtle1', [(1.08, 1.0)], RED)
+    assert trails.strokes == [Stroke('turtle1', RED, 1.04, 1.0, 1.06, 1.0),
+                              Stroke('turtle1', RED, 1.06, 1.0, 1.08, 1.0)]
 
 
-def test_a_colour_that_comes_before_its_pose_draws_at_the_next_one():
+def test_a_jump_is_a_teleport_drawn_only_on_new_ink_where_it_lands():
     trails = Trails()
-    drive(trails, 't', [(1.0, 1.0)], PEN)
-    trails.colour('t', PEN)             # before the pose of its tick
-    trails.pose('t', 2.0, 1.0, 0.0)
-    trails.pose('t', 3.0, 1.0, 0.0)
-    trails.colour('t', PEN)
-    assert trails.strokes == [Stroke('t', PEN, 1.0, 1.0, 3.0, 1.0)]
-
-
-def test_a_custom_background_is_the_pen_up_colour():
-    trails = Trails(background=(10, 20, 30))
-    drive(trails, 't', [(1.0, 1.0), (2.0, 2.0)], (10, 20, 30))
-    drive(trails, 't', [(3.0, 3.0)], DEFAULT_BACKGROUND)
-    assert len(trails.strokes) == 1 and trails.strokes[0].colour == DEFAULT_BACKGROUND
+    drive(trails, 't', [(1.0, 1.0), (1.0, 1.0)], PEN)
+    trails.pose('t', 3.0, 1.0, 0.0)         # no speed: a teleport
+    drive(trails, 't', [(3.0, 1.0), (3.0, 1.0), (3.0, 1.0)], DEFAULT_BACKGROUND)
+    assert trails.strokes == []
+    trails.pose('t', 5.0, 1.0, 0.0)
+    drive(trails, 't', [(5.0, 1.0), (5.0, 1.0), (5.0, 1.0)], RED)
+    assert trails.strokes == [Stroke('t', RED, 3.0, 1.0, 5.0, 1.0)]
 
 
 def test_a_reader_gets_what_came_since_it_looked_and_everything_after_a_clear():
     trails = Trails()
-    drive(trails, 'a', [(1.0, 1.0), (2.0, 1.0), (3.0, 1.0)], PEN)
+    drive(trails, 'a', [(1.0, 1.0), (1.02, 1.0), (1.04, 1.0), (1.04, 1.0), (1.04, 1.0)], PEN)
     clears, strokes, turtles = trails.since(0, 1)
     assert (clears, len(strokes), set(turtles)) == (0, 1, {'a'})
-    trails.clear()
-    drive(trails, 'a', [(4.0, 1.0)], RED)
+    trails.clear((10, 20, 30))
+    drive(trails, 'a', [(1.06, 1.0)], RED)
     clears, strokes, _ = trails.since(0, 2)
-    assert clears == 1 and strokes == [Stroke('a', RED, 3.0, 1.0, 4.0, 1.0)]
+    assert clears == 1 and [s[:6] for s in strokes] == [('a', RED, 1.04, 1.0, 1.06, 1.0)]
+    assert trails.background == (10, 20, 30)
 
 
 def test_a_killed_turtle_goes_and_its_strokes_stay_until_a_reset():
