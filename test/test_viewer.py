@@ -190,7 +190,7 @@ class ViewerInABrowser(unittest.TestCase):
     def test_2c_rebuilt_from_poses_as_for_the_real_turtlesim(self):
         """A viewer that does not take the simulator's ink (~ink false) reads
         the pens from poses and the colour under the turtle, as it must with
-        the real turtlesim: a 3-px line at 2.5 m/s, a 1-px one at 1 m/s, a
+        the real turtlesim: a 3-px line at 2.5 m/s, a 2-px one at 1 m/s, a
         pen-up teleport onto ink and away, and a pen-down one, on its
         /canvas.png as on turtlesim's own canvas."""
         port = free_port()
@@ -206,7 +206,7 @@ class ViewerInABrowser(unittest.TestCase):
             cmd_vel = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=10)
             wait_until(lambda: cmd_vel.get_num_connections() > 0, 10, 'turtlesim on cmd_vel')
             for (x, y), rgb, width, speed in (((1.0, 6.0), (255, 0, 0), 3, 2.5),
-                                              ((1.0, 7.0), (0, 160, 0), 1, 1.0)):
+                                              ((1.0, 7.0), (0, 160, 0), 2, 1.0)):
                 pen(0, 0, 0, 3, 1)
                 teleport(x, y, 0.0)
                 rospy.sleep(0.3)

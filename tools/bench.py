@@ -12,11 +12,15 @@ A classroom group (tools/bench_classroom.py) draws the N with 1, 10 and 30
 turtles at once, and a parallel word against its slowest letter alone. A
 grading group (tools/bench_grading.py, root) grades a class of 30 with
 grade_class.py, the lab's own submission alone against it in the class, and
-Lena's L with and without the sandbox (its cost).
+Lena's L with and without the sandbox (its cost). A slow-network group
+(tools/bench_latency.py) draws the N in each mode with its commands and
+poses 0, 20, 50 and 100 ms late.
 
 Usage: bench.py [--reps N] [--letter N] [--modes timed,timed-wall,feedback] [--loads idle,loaded]
                 [--classroom 1,10,30] [--parallel-word yes|no] [--grade-class 30]
-                [--fairness yes|no] [--sandbox-cost yes|no] [--viewer 1,30]
+                [--fairness yes|no] [--sandbox-cost yes|no] [--viewer 1,30,30x100]
+                [--viewer-soak 3600]
+                [--latency 0,20,50,100]
 """
 import argparse
 import json
@@ -28,7 +32,7 @@ import statistics
 import sys
 import time
 
-PORT = 11499                      # a master of our own, away from 11311
+PORT = int(os.environ.get('BENCH_PORT', '11499'))   # a master of our own, away from 11311
 os.environ['ROS_MASTER_URI'] = f'http://127.0.0.1:{PORT}'
 
 import rospy  # noqa: E402  (after the master URI is chosen)
@@ -48,7 +52,8 @@ from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # 
 from turtle_letters.grading.procstat import cpu_seconds, rss_mb  # noqa: E402
 from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
 from bench_grading import alone_runs, class_run, grading_lines, sandbox_cost  # noqa: E402
-from bench_viewer import viewer_lines, viewer_run  # noqa: E402
+from bench_viewer import soak_run, viewer_lines, viewer_run  # noqa: E402
+from bench_latency import latency_lines, latency_run  # noqa: E402
 
 # Loaded, a command that misses turtlesim's 16 ms tick is replaced by the one
 # before, applied once more: smooth mode then runs on up to a tick's move
@@ -355,6 +360,7 @@ def table(results, sim):
     lines.extend(classroom_lines(results))
     lines.extend(grading_lines(results))
     lines.extend(viewer_lines(results))
+    lines.extend(latency_lines(results))
     sim_f = results['simulator_figures']
     idle, ten = sim_f['idle'], sim_f['ten_moving']
 
@@ -401,8 +407,15 @@ def main():
                         help="the lab's submission graded alone 3 times, against the class")
     parser.add_argument('--sandbox-cost', default='yes', choices=('yes', 'no'),
                         help="Lena's L graded 3 times in the sandbox and 3 times without (root)")
-    parser.add_argument('--viewer', default='1,30',
-                        help='turtles drawing while the viewer is measured, per run ("" for none)')
+    parser.add_argument('--viewer', default='1,30,30x100',
+                        help='turtles drawing while the viewer is measured, per run, each with '
+                             '10 pages or xPAGES ("" for none)')
+    parser.add_argument('--viewer-soak', type=float, default=0.0,
+                        help="s that 30 turtles draw while the viewer's memory is watched, "
+                             'with 10 pages (0: none; the doc figure: 3600)')
+    parser.add_argument('--latency', default='0,20,50,100',
+                        help='ms each way commands and poses are late, per run of every mode '
+                             '("" for none)')
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
@@ -441,9 +454,19 @@ def main():
             print(f'bench: classroom, {turtles} turtles at once...', flush=True)
             results.setdefault('classroom', []).append(
                 classroom_run(processes, sim.pid, int(turtles)))
-        for turtles in filter(None, args.viewer.split(',')):
-            print(f'bench: the viewer, {turtles} turtles drawing...', flush=True)
-            results.setdefault('viewer', []).append(viewer_run(processes, int(turtles)))
+        for run in filter(None, args.viewer.split(',')):
+            turtles, _, pages = run.partition('x')
+            print(f'bench: the viewer, {turtles} turtles drawing, {pages or 10} pages...',
+                  flush=True)
+            results.setdefault('viewer', []).append(
+                viewer_run(processes, int(turtles), int(pages or 10)))
+        if args.viewer_soak:
+            print(f'bench: the viewer, 30 turtles drawing for {args.viewer_soak:g} s...', flush=True)
+            results['viewer_soak'] = soak_run(processes, 30, args.viewer_soak)
+        for delay_ms in filter(None, args.latency.split(',')):
+            print(f'bench: each mode over a network {delay_ms} ms late each way...', flush=True)
+            results.setdefault('latency', []).extend(
+                latency_run(processes, recorder, chatter, int(delay_ms)))
         if args.parallel_word == 'yes':
             print('bench: a parallel word, and its slowest letter alone...', flush=True)
             results['parallel_word'] = parallel_word_run(processes)

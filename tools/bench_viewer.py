@@ -30,12 +30,13 @@ from turtlesim.msg import Pose
 from turtlesim.srv import Spawn
 
 from support.browser import browser
-from turtle_letters.grading.procstat import cpu_seconds
+from turtle_letters.grading.procstat import cpu_seconds, rss_mb
 from turtle_letters.viewer.trails import to_pixels
 
 LATENCY_TARGET_MS, CPU_TARGET_PCT, BYTES_TARGET = 100.0, 10.0, 100_000
 WINDOW = 20.0           # s each figure is measured over
 PAGES = 10
+SOAK_SAMPLE = 60.0     # s between looks at the viewer's memory in a soak
 LISTEN = """
 window.arrivals = [];
 const ws = new WebSocket('ws://' + location.host + '/room');
@@ -131,25 +132,31 @@ def _reader(url, counts, stop):
     asyncio.run(read())
 
 
-def viewer_run(processes, turtles):
-    """Latency with `turtles` turtles; with PAGES pages, the viewer's CPU and bytes per page."""
-    rospy.ServiceProxy('/reset', Empty)()
-    _spawn_turtles(turtles)
-    port = _free_port()
-    viewer = processes.start('view', 'rosrun', 'turtle_letters', 'view.py', f'_port:={port}')
-    url = f'http://127.0.0.1:{port}/'
+def _wait_serving(url):
     deadline = time.monotonic() + 30
     while time.monotonic() < deadline:
         try:
             urllib.request.urlopen(url, timeout=1)
-            break
+            return
         except OSError:
             time.sleep(0.2)
+
+
+def viewer_run(processes, turtles, pages=PAGES):
+    """Latency with `turtles` turtles; with `pages` pages, the viewer's CPU,
+    its memory and the bytes per page."""
+    rospy.ServiceProxy('/reset', Empty)()
+    _spawn_turtles(turtles)
+    port = _free_port()
+    viewer = processes.start('view', 'rosrun', 'turtle_letters', 'view.py', f'_port:={port}',
+                             f'_max_pages:={max(pages, 120)}')
+    url = f'http://127.0.0.1:{port}/'
+    _wait_serving(url)
     stop, profile = threading.Event(), tempfile.mkdtemp(prefix='bench_chromium_')
     driving = threading.Thread(target=_drive, args=(turtles, stop), daemon=True)
     driving.start()
     driver = browser(profile)
-    readers, counts = [], [[] for _ in range(PAGES - 1)]
+    readers, counts = [], [[] for _ in range(pages - 1)]
     try:
         driver.get(url)
         poses = PoseTimes()
@@ -161,6 +168,7 @@ def viewer_run(processes, turtles):
         time.sleep(3.0)         # every turtle's circle under way, every page reading
         started = time.monotonic()
         cpu_pct = _cpu_pct(viewer.pid, WINDOW)
+        memory_mb = rss_mb(viewer.pid)
         latencies = _latencies(driver, poses)
         bytes_per_s = [sum(n for t, n in c if t >= started) / WINDOW for c in counts]
         poses.subscriber.unregister()
@@ -170,7 +178,8 @@ def viewer_run(processes, turtles):
         stop.set()
         driver.quit()
         processes.stop(viewer)
-    return dict(turtles=turtles, pages=PAGES, cpu_pct=cpu_pct, rospy_floor_pct=floor_pct,
+    return dict(turtles=turtles, pages=pages, cpu_pct=cpu_pct, rospy_floor_pct=floor_pct,
+                memory_mb=memory_mb,
                 latency_median_ms=statistics.median(latencies) if latencies else math.nan,
                 latency_p95_ms=latencies[int(0.95 * (len(latencies) - 1))] if latencies else math.nan,
                 latency_samples=len(latencies),
@@ -178,10 +187,51 @@ def viewer_run(processes, turtles):
                 bytes_per_s_worst=max(bytes_per_s))
 
 
+def soak_run(processes, turtles, seconds, pages=PAGES):
+    """The viewer's memory while `turtles` turtles draw for `seconds`, with
+    `pages` pages of the bench's own reading every update: its resident
+    size each SOAK_SAMPLE s, and its CPU over the whole."""
+    rospy.ServiceProxy('/reset', Empty)()
+    _spawn_turtles(turtles)
+    port = _free_port()
+    viewer = processes.start('view_soak', 'rosrun', 'turtle_letters', 'view.py', f'_port:={port}')
+    url = f'http://127.0.0.1:{port}/'
+    _wait_serving(url)
+    stop = threading.Event()
+    threading.Thread(target=_drive, args=(turtles, stop), daemon=True).start()
+    for _ in range(pages):
+        threading.Thread(target=_reader, args=(url.replace('http', 'ws') + 'room', [], stop),
+                         daemon=True).start()
+    samples = []
+    try:
+        used, started = cpu_seconds(viewer.pid), time.monotonic()
+        while time.monotonic() - started < seconds:
+            samples.append((time.monotonic() - started, rss_mb(viewer.pid)))
+            time.sleep(min(SOAK_SAMPLE, max(0.0, seconds - (time.monotonic() - started))))
+        samples.append((time.monotonic() - started, rss_mb(viewer.pid)))
+        cpu_pct = 100 * (cpu_seconds(viewer.pid) - used) / (time.monotonic() - started)
+    finally:
+        stop.set()
+        processes.stop(viewer)
+    return dict(turtles=turtles, pages=pages, seconds=seconds, cpu_pct=cpu_pct, rss_mb=samples)
+
+
+def soak_lines(results):
+    soak = results.get('viewer_soak')
+    if not soak:
+        return []
+    sizes = [mb for _, mb in soak['rss_mb']]
+    tenth = max(1, len(sizes) // 10)
+    return [f"viewer, {soak['turtles']} turtles drawing for {soak['seconds'] / 60:g} min, "
+            f"{soak['pages']} pages: resident {sizes[0]:.0f} MB at the start, "
+            f"{max(sizes[:tenth]):.0f} MB at most in the first tenth, {max(sizes):.0f} MB at most, "
+            f"{sizes[-1]:.0f} MB at the end; CPU {soak['cpu_pct']:.1f}%"]
+
+
 def viewer_lines(results):
     runs = results.get('viewer')
     if not runs:
-        return []
+        return soak_lines(results)
     lines = ['']
     for r in runs:
         late = r['latency_p95_ms'] > LATENCY_TARGET_MS
@@ -190,11 +240,13 @@ def viewer_lines(results):
             f"{r['latency_median_ms']:.0f} ms, 95th percentile {r['latency_p95_ms']:.0f}"
             f"{'!' if late else ''} ms ({r['latency_samples']} poses); viewer CPU "
             f"{r['cpu_pct']:.1f}{'!' if r['cpu_pct'] > CPU_TARGET_PCT and r['turtles'] >= 30 else ''}"
-            f"% (rospy alone, subscribed to the same topics: {r['rospy_floor_pct']:.1f}%); "
+            f"% (rospy alone, subscribed to the same topics: {r['rospy_floor_pct']:.1f}%), "
+            f"{r.get('memory_mb', math.nan):.0f} MB resident; "
             f"per page {r['bytes_per_s_median'] / 1000:.1f} kB/s (worst "
             f"{r['bytes_per_s_worst'] / 1000:.1f}"
             f"{'!' if r['bytes_per_s_worst'] > BYTES_TARGET else ''})")
     lines.append(f'Viewer targets: pose to page <= {LATENCY_TARGET_MS:g} ms (95th percentile); '
                  f'<= {CPU_TARGET_PCT:g}% of a core for 30 turtles and {PAGES} pages; '
+                 f'memory bounded however long they draw; '
                  f'<= {BYTES_TARGET / 1000:g} kB/s per page.')
-    return lines
+    return lines + soak_lines(results)

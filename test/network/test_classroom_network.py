@@ -5,6 +5,9 @@ namespaces on one host, joined by a bridge, each with its own /etc/hosts
 - master: classroom.launch (roscore and turtlesim);
 - alice and bob: student.launch, triggered from their own machines at once;
   every vertex of both letters within a single letter's tolerance;
+- carol: her controller on a slow link: her commands and her turtle's
+  poses each pass a delay_relay.py on her machine, 50 ms +- 30 ms late
+  (this machine has no netem); her letter as exact as the others';
 - eve: student.launch on a machine whose name the master's machine cannot
   resolve, so turtlesim cannot connect to her cmd_vel: the diagnosis line
   comes within 3 s of the trigger, and her launch still stops on Ctrl-C.
@@ -24,7 +27,7 @@ from support.netns import log_time, output, read_poses, stop, wait_for_line
 from turtle_letters.letters.font import BUILTIN
 from turtle_letters.letters.geometry import PlannedPose
 
-ADDRESSES = {'master': 1, 'alice': 2, 'bob': 3, 'eve': 4}
+ADDRESSES = {'master': 1, 'alice': 2, 'bob': 3, 'eve': 4, 'carol': 5}
 UNKNOWN_TO_MASTER = 'eve'
 TOLERANCE = 0.05        # m: a single letter's, as test_draw_letter's
 STUDENT_ARGS = {'alice': ['angular_speed:=1.0'], 'bob': ['mode:=smooth'], 'eve': []}
@@ -49,6 +52,15 @@ def test_two_students_draw_at_once_and_a_third_gets_the_diagnosis(classroom):
         students[name] = classroom[name].start(
             'student', 'roslaunch', 'turtle_letters', 'student.launch', f'name:={name}',
             'talker:=false', *STUDENT_ARGS[name])
+    carol = classroom['carol']
+    relays = [carol.start(f'relay_{n}', 'rosrun', 'turtle_letters', 'delay_relay.py', f'in:={a}',
+                          f'out:={b}', '_delay:=0.05', '_jitter:=0.03', f'__name:=carol_relay_{n}')
+              for n, (a, b) in enumerate([('/carol/slow_cmd_vel', '/carol/cmd_vel'),
+                                          ('/carol/pose', '/carol/slow_pose')])]
+    students['carol'] = carol.start(
+        'student', 'rosrun', 'turtle_letters', 'turtle_controller.py', '__ns:=/carol',
+        '_turtle:=/carol', '_letter:=C', '_size:=1.0', '/carol/cmd_vel:=/carol/slow_cmd_vel',
+        '/carol/pose:=/carol/slow_pose')
     for name, launch in students.items():
         wait_for_line(launch, r'Ready: publish', 90)
     # The master's machine cannot resolve eve: her network check says so,
@@ -57,23 +69,23 @@ def test_two_students_draw_at_once_and_a_third_gets_the_diagnosis(classroom):
     assert 'turtlesim has not connected to /eve/cmd_vel' in output(students['eve'])
 
     recorders = {name: master.start(f'{name}_poses', 'rostopic', 'echo', '-p', f'/{name}/pose')
-                 for name in ('alice', 'bob')}
+                 for name in ('alice', 'bob', 'carol')}
     for recorder in recorders.values():
         wait_for_line(recorder, r'\d+,', 30)
 
     triggers = [classroom[name].start('trigger', 'rostopic', 'pub', '-1', f'/{name}/chatter',
                                       'std_msgs/String', "data: 'P'")
-                for name in ('alice', 'bob')]
-    for name in ('alice', 'bob'):
+                for name in ('alice', 'bob', 'carol')]
+    for name in ('alice', 'bob', 'carol'):
         wait_for_line(students[name], r'Done drawing', 180)
     error = wait_for_line(students['eve'], r'did not move as commanded[^\n]*', 60)
     for trigger in triggers:
         trigger.wait(30)
-    for process in [eve_trigger, *recorders.values()]:
+    for process in [eve_trigger, *recorders.values(), students.pop('carol'), *relays]:
         stop(process)
 
-    # Both letters, each as exact as a single letter.
-    for name, letter in (('alice', 'A'), ('bob', 'B')):
+    # Every letter, the slow link's too, as exact as a single letter.
+    for name, letter in (('alice', 'A'), ('bob', 'B'), ('carol', 'C')):
         poses = read_poses(recorders[name].out_path)
         x, y, theta = poses[0]
         start = PlannedPose(x, y, theta)

@@ -78,7 +78,7 @@ class View:
         self.painting = Painting(self.trails)
         self.drawings = Drawings()
         self.scoreboard = ''
-        self.turtles = {}           # name: its two subscribers
+        self.turtles = {}           # name: its subscribers
         self.simulators = set()     # nodes that serve /spawn
         self.ink = None             # the subscriber to a simulator's ink, when it has one
         self.master = rosgraph.Master(rospy.get_name())
@@ -112,11 +112,15 @@ class View:
     def _follow(self, name):
         # Read unparsed (rospy.AnyMsg): with 30 turtles, 3,750 messages a
         # second come, and their fixed layouts unpack at a fraction of the cost.
-        self.turtles[name] = (
+        # With the simulator's ink, the colour under a turtle tells nothing
+        # more: not subscribing spares the simulator half the messages.
+        self.turtles[name] = [
             rospy.Subscriber(f'{name}/pose', rospy.AnyMsg, lambda m: self.trails.pose(
-                name, *POSE.unpack_from(m._buff)), queue_size=100),
-            rospy.Subscriber(f'{name}/color_sensor', rospy.AnyMsg, lambda m: self.trails.colour(
-                name, COLOR.unpack_from(m._buff)), queue_size=100))
+                name, *POSE.unpack_from(m._buff)), queue_size=100)]
+        if self.ink is None:
+            self.turtles[name].append(rospy.Subscriber(
+                f'{name}/color_sensor', rospy.AnyMsg, lambda m: self.trails.colour(
+                    name, COLOR.unpack_from(m._buff)), queue_size=100))
 
     def on_log(self, message):
         """turtlesim's own word that it cleared or reset its canvas."""

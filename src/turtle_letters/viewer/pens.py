@@ -172,23 +172,21 @@ class PenReader:
 
     def pose(self, x, y, theta, speed):
         """The tick's pose; `speed` the linear speed it was commanded (m/s)."""
+        self.under = self.line          # the last move's line lies under it now
         if (x, y) == (self.x, self.y):
             self.rest += 1
-            self.under = self.line
             return
-        self.rest = 0
-        move = speed * SIM_TICK
+        self.rest, self.line = 0, None
+        move = speed * SIM_TICK         # turtlesim moves on the new heading
         landed = (x - move * math.cos(theta), y - move * math.sin(theta))
-        self.under = self.line
         if math.hypot(landed[0] - self.x, landed[1] - self.y) > JUMP:
             self.jump, self.under = Step(self.x, self.y, *landed), None
         else:
             landed, self.jump = (self.x, self.y), None
-        self.line = None
         if (x, y) != landed:
             self.steps.append(Step(*landed, x, y))
             self.line = (to_pixels(*landed), to_pixels(x, y))
-        self.sensed, self.x, self.y = (x, y), x, y
+        self.x, self.y = x, y
 
     def read(self, colour, pixels, doubts, background) -> List[Line]:
         """The colour under the turtle this tick: the lines it proves or settles."""

@@ -57,6 +57,8 @@ class Trails:
         with self.lock:
             self.turtles[name] = Turtle(x, y, theta)
             reader = self.readers.get(name)
+            if self.inked:              # the simulator says its ink itself
+                return
             if reader is None:
                 self.readers[name] = PenReader(x, y, DEFAULT_PEN)
             else:
