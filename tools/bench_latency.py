@@ -56,18 +56,27 @@ def one_mode(processes, recorder, chatter, mode, slow):
         recorder.reset()
         t0 = time.time()
         chatter.publish(String('P'))
-        recorder.wait_until_still(t0, 300, still_for=3.0, what=f'the {mode} N drawn')
+        log = os.path.join(processes.log_dir, 'slow_controller.log')
+        wait_until(lambda: _ended(log), 300, f'the {mode} N drawn, or stopped')
+        time.sleep(1.0)     # its last poses
         with recorder.lock:
             moving = [t for t, m in recorder.poses
                       if t >= t0 and (m.linear_velocity or m.angular_velocity)]
         path = recorder.path(t0 - 0.5)
         errors = vertex_errors(path, LAB_N_VERTICES)
-        with open(os.path.join(processes.log_dir, 'slow_controller.log')) as f:
+        with open(log) as f:
             said = f.read()
         return {'mode': mode, 'drawing_s': moving[-1] - moving[0],
-                'vertex_max_mm': 1000 * max(errors), 'ended': 'did not reach' not in said}
+                'vertex_max_mm': 1000 * max(errors), 'ended': "Done drawing 'N'" in said}
     finally:
         processes.stop(controller)
+
+
+def _ended(log):
+    """Whether the controller said its drawing was done, or why it stopped."""
+    with open(log) as f:
+        said = f.read()
+    return "Done drawing 'N'" in said or "Drawing of 'N' stopped" in said
 
 
 def latency_lines(results):

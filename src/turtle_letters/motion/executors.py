@@ -113,7 +113,9 @@ class TimedExecutor:
         standing and the amount used is right. A command that came a tick
         late makes it go too far: then it goes back the difference, spread
         over SETTLE_TICKS ticks so that a late stop costs a quarter of it,
-        and so on until it is right. (A pose's linear velocity has no sign;
+        and so on until it is right; over a network whose delay varies, over
+        4 ticks more for each tick it varies by, since a late or bunched
+        command there acts a tick more or less. (A pose's linear velocity has no sign;
         between two stops every command goes the same way.)"""
         if self.clock == 'wall':
             # The command sent now moves the turtle on the next tick: it is
@@ -131,7 +133,8 @@ class TimedExecutor:
             if abs(error) <= SETTLED:
                 return None
             self.way = 1.0 if error > 0 else -1.0
-            self.cap = min(self.speed, abs(error) / (SETTLE_TICKS * SIM_TICK))
+            spread = self.latency.spread if self.latency is not None else 0
+            self.cap = min(self.speed, abs(error) / ((SETTLE_TICKS + 4 * spread) * SIM_TICK))
             self.stopping, self.stops = False, 0
         return self._command()
 
