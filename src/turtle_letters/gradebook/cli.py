@@ -309,13 +309,27 @@ def _graded(future, student, rubric):
                            rubrics.grade(facts, rubric), 0.0, [], None), facts
 
 
+class _Painting:
+    """Whether a picture is being painted, and a stop that came meanwhile:
+    Ctrl-C raised mid-paint leaves Qt painting on an image Python frees,
+    and the grader dies of SIGSEGV instead of writing the class files."""
+    now = False
+    held = None
+
+
 def _finished(out, graded, progress, isolated):
     row, facts = graded
+    _Painting.now = True
     try:
         row = draw_picture(out, row, facts)
     except Exception as e:      # no picture costs no row
         row = row._replace(warning='; '.join(filter(None, [row.warning, f'no picture: {e}'])))
+    finally:
+        _Painting.now = False
     progress.row(said(row, isolated))
+    held, _Painting.held = _Painting.held, None
+    if held is not None:        # the stop that waited for the picture
+        signal.getsignal(held[0])(*held)
     return row
 
 
@@ -332,6 +346,9 @@ def _interrupt(number, _):
 def _first_stop(place):
     """Ctrl-C or SIGTERM while grading: the next one forces, from now on."""
     def first(number, frame):
+        if _Painting.now:
+            _Painting.held = (number, frame)
+            return
         _on_signal(_force(place))
         _interrupt(number, frame)
     return first
