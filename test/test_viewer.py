@@ -73,6 +73,23 @@ def drive(publisher, speed, seconds):
     rospy.sleep(0.2)
 
 
+def draw_lines(lines, rest=0.0):
+    """Each ((x, y), colour, width, speed): 3 m from (x, y) along x, with that
+    pen, reached with the pen up (and `rest` s there); turtle1's pen and
+    teleport services, for what a test does next."""
+    pen = rospy.ServiceProxy('/turtle1/set_pen', SetPen)
+    teleport = rospy.ServiceProxy('/turtle1/teleport_absolute', TeleportAbsolute)
+    cmd_vel = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=10)
+    wait_until(lambda: cmd_vel.get_num_connections() > 0, 10, 'turtlesim on cmd_vel')
+    for (x, y), rgb, width, speed in lines:
+        pen(0, 0, 0, 3, 1)
+        teleport(x, y, 0.0)
+        rospy.sleep(rest)
+        pen(*rgb, width, 0)
+        drive(cmd_vel, speed, 3.0 / speed)
+    return pen, teleport
+
+
 @unittest.skipUnless(have_browser(), 'no chromium-driver here (make deps installs it)')
 class ViewerInABrowser(unittest.TestCase):
     @classmethod
@@ -162,16 +179,8 @@ class ViewerInABrowser(unittest.TestCase):
         away (no line), each on the page as on turtlesim's own canvas."""
         if ['/turtlesim/ink', 'std_msgs/String'] not in rospy.get_published_topics():
             self.skipTest('the real turtlesim publishes no ink; the page rebuilds from poses')
-        pen = rospy.ServiceProxy('/turtle1/set_pen', SetPen)
-        teleport = rospy.ServiceProxy('/turtle1/teleport_absolute', TeleportAbsolute)
-        cmd_vel = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=10)
-        wait_until(lambda: cmd_vel.get_num_connections() > 0, 10, 'turtlesim on cmd_vel')
-        for (x, y), rgb, width, speed in (((1.0, 1.0), (255, 0, 0), 1, 2.5),
-                                          ((1.0, 2.0), (0, 160, 0), 3, 1.0)):
-            pen(0, 0, 0, 3, 1)
-            teleport(x, y, 0.0)
-            pen(*rgb, width, 0)
-            drive(cmd_vel, speed, 3.0 / speed)
+        pen, teleport = draw_lines((((1.0, 1.0), (255, 0, 0), 1, 2.5),
+                                    ((1.0, 2.0), (0, 160, 0), 3, 1.0)))
         pen(0, 0, 0, 3, 1)
         teleport(2.0, 1.0, 0.0)         # onto the red line
         teleport(9.0, 9.0, 0.0)         # and away
@@ -201,17 +210,8 @@ class ViewerInABrowser(unittest.TestCase):
                 '/posed_view', '/turtle1/color_sensor', 'i'), 30,
                 'the viewer from poses serving, and on the colour sensor', posed.output)
             rospy.ServiceProxy('/clear', Empty)()
-            pen = rospy.ServiceProxy('/turtle1/set_pen', SetPen)
-            teleport = rospy.ServiceProxy('/turtle1/teleport_absolute', TeleportAbsolute)
-            cmd_vel = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=10)
-            wait_until(lambda: cmd_vel.get_num_connections() > 0, 10, 'turtlesim on cmd_vel')
-            for (x, y), rgb, width, speed in (((1.0, 6.0), (255, 0, 0), 3, 2.5),
-                                              ((1.0, 7.0), (0, 160, 0), 2, 1.0)):
-                pen(0, 0, 0, 3, 1)
-                teleport(x, y, 0.0)
-                rospy.sleep(0.3)
-                pen(*rgb, width, 0)
-                drive(cmd_vel, speed, 3.0 / speed)
+            pen, teleport = draw_lines((((1.0, 6.0), (255, 0, 0), 3, 2.5),
+                                        ((1.0, 7.0), (0, 160, 0), 2, 1.0)), rest=0.3)
             pen(0, 0, 0, 3, 1)
             teleport(2.0, 6.0, 0.0)         # onto the red line, pen up
             rospy.sleep(0.3)
