@@ -45,6 +45,8 @@ def one_mode(processes, recorder, chatter, mode, slow):
         rospy.delete_param(NAME)
     remaps = SLOW if slow else []
     pose_topic = '/slow/turtle1/pose' if slow else '/turtle1/pose'
+    # Its commands go to the relay, or straight to turtlesim and the recorder.
+    cmd_topic, listeners = ('/slow/turtle1/cmd_vel', 1) if slow else ('/turtle1/cmd_vel', 2)
     controller = processes.start('slow_controller', 'rosrun', 'turtle_letters',
                                  'turtle_controller.py', f'_mode:={mode}',
                                  f'__name:={NAME[1:]}', *remaps)
@@ -52,8 +54,15 @@ def one_mode(processes, recorder, chatter, mode, slow):
         wait_until(lambda: subscribed(NAME, pose_topic) and subscribed(NAME, '/chatter'), 60,
                    f'the {mode} controller on its poses and /chatter')
         wait_until(lambda: connections(NAME, '/chatter', 'i') > 0, 30, 'our /chatter to it')
+        # A first command sent before turtlesim listens is lost, and a
+        # smooth drawing then runs a tick (16 mm) behind its plan.
+        wait_until(lambda: connections(NAME, cmd_topic, 'o') >= listeners, 30,
+                   f"the {mode} controller's commands connected")
         time.sleep(1.0)
         recorder.reset()
+        # The pose it starts from: else, at 0 ms, the first one the recorder
+        # hears is a tick into the drawing, 16 mm from the N's first vertex.
+        wait_until(lambda: recorder.poses, 5, 'a pose of the turtle before the trigger')
         t0 = time.time()
         chatter.publish(String('P'))
         log = os.path.join(processes.log_dir, 'slow_controller.log')
@@ -62,7 +71,7 @@ def one_mode(processes, recorder, chatter, mode, slow):
         with recorder.lock:
             moving = [t for t, m in recorder.poses
                       if t >= t0 and (m.linear_velocity or m.angular_velocity)]
-        path = recorder.path(t0 - 0.5)
+        path = recorder.path()
         errors = vertex_errors(path, LAB_N_VERTICES)
         with open(log) as f:
             said = f.read()

@@ -187,45 +187,66 @@ def viewer_run(processes, turtles, pages=PAGES):
                 bytes_per_s_worst=max(bytes_per_s))
 
 
+SOAK_VIEWERS = {'ink': [], 'poses': ['_ink:=false']}   # from the simulator's ink; as with turtlesim
+
+
 def soak_run(processes, turtles, seconds, pages=PAGES):
-    """The viewer's memory while `turtles` turtles draw for `seconds`, with
-    `pages` pages of the bench's own reading every update: its resident
-    size each SOAK_SAMPLE s, and its CPU over the whole."""
+    """The memory of two viewers side by side while `turtles` turtles draw
+    for `seconds`: one drawing the simulator's ink, one rebuilding from
+    poses and color sensors as it does with the real turtlesim; each with
+    `pages` pages of the bench's own reading every update. Their resident
+    size each SOAK_SAMPLE s, and their CPU over the whole."""
     rospy.ServiceProxy('/reset', Empty)()
     _spawn_turtles(turtles)
-    port = _free_port()
-    viewer = processes.start('view_soak', 'rosrun', 'turtle_letters', 'view.py', f'_port:={port}')
-    url = f'http://127.0.0.1:{port}/'
-    _wait_serving(url)
-    stop = threading.Event()
+    viewers, stop = {}, threading.Event()
+    for name, extra in SOAK_VIEWERS.items():
+        port = _free_port()
+        viewers[name] = processes.start(f'view_soak_{name}', 'rosrun', 'turtle_letters', 'view.py',
+                                        f'__name:=view_{name}', f'_port:={port}', *extra)
+        url = f'http://127.0.0.1:{port}/'
+        _wait_serving(url)
+        for _ in range(pages):
+            threading.Thread(target=_reader, args=(url.replace('http', 'ws') + 'room', [], stop),
+                             daemon=True).start()
     threading.Thread(target=_drive, args=(turtles, stop), daemon=True).start()
-    for _ in range(pages):
-        threading.Thread(target=_reader, args=(url.replace('http', 'ws') + 'room', [], stop),
-                         daemon=True).start()
-    samples = []
+    samples = {name: [] for name in viewers}
     try:
-        used, started = cpu_seconds(viewer.pid), time.monotonic()
-        while time.monotonic() - started < seconds:
-            samples.append((time.monotonic() - started, rss_mb(viewer.pid)))
-            time.sleep(min(SOAK_SAMPLE, max(0.0, seconds - (time.monotonic() - started))))
-        samples.append((time.monotonic() - started, rss_mb(viewer.pid)))
-        cpu_pct = 100 * (cpu_seconds(viewer.pid) - used) / (time.monotonic() - started)
+        used = {name: cpu_seconds(v.pid) for name, v in viewers.items()}
+        started = time.monotonic()
+        while True:
+            elapsed = time.monotonic() - started
+            for name, viewer in viewers.items():
+                samples[name].append((elapsed, rss_mb(viewer.pid)))
+            if elapsed >= seconds:
+                break
+            time.sleep(min(SOAK_SAMPLE, seconds - elapsed))
+        cpu_pct = {name: 100 * (cpu_seconds(v.pid) - used[name]) / (time.monotonic() - started)
+                   for name, v in viewers.items()}
     finally:
         stop.set()
-        processes.stop(viewer)
+        for viewer in viewers.values():
+            processes.stop(viewer)
     return dict(turtles=turtles, pages=pages, seconds=seconds, cpu_pct=cpu_pct, rss_mb=samples)
+
+
+SOAK_WORDS = {'ink': "from the simulator's ink", 'poses': 'from poses, as with turtlesim'}
 
 
 def soak_lines(results):
     soak = results.get('viewer_soak')
     if not soak:
         return []
-    sizes = [mb for _, mb in soak['rss_mb']]
-    tenth = max(1, len(sizes) // 10)
-    return [f"viewer, {soak['turtles']} turtles drawing for {soak['seconds'] / 60:g} min, "
-            f"{soak['pages']} pages: resident {sizes[0]:.0f} MB at the start, "
-            f"{max(sizes[:tenth]):.0f} MB at most in the first tenth, {max(sizes):.0f} MB at most, "
-            f"{sizes[-1]:.0f} MB at the end; CPU {soak['cpu_pct']:.1f}%"]
+    lines = []
+    for name, samples in soak['rss_mb'].items():
+        sizes = [mb for _, mb in samples]
+        tenth = max(1, len(sizes) // 10)
+        lines.append(
+            f"viewer {SOAK_WORDS[name]}, {soak['turtles']} turtles drawing for "
+            f"{soak['seconds'] / 60:g} min, {soak['pages']} pages: resident {sizes[0]:.0f} MB "
+            f"at the start, {max(sizes[:tenth]):.0f} MB at most in the first tenth, "
+            f"{max(sizes):.0f} MB at most, {sizes[-1]:.0f} MB at the end; "
+            f"CPU {soak['cpu_pct'][name]:.1f}%")
+    return lines
 
 
 def viewer_lines(results):
