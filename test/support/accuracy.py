@@ -2,10 +2,10 @@
 the measures are the grader's (turtle_letters.grading). No ROS here."""
 from turtle_letters.grading.scoring import distance_to_lines, vertex_errors  # noqa: F401
 from turtle_letters.letters.font import BUILTIN
-from turtle_letters.letters.geometry import distance_to_segment  # noqa: F401 (for the tests)
-from turtle_letters.letters.layout import WORLD_SIZE
+from turtle_letters.letters.geometry import PlannedPose, distance_to_segment  # noqa: F401
+from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
 from turtle_letters.letters.plan import text_strokes
-from turtle_letters.letters.primitives import Line, Pen, Written, plan_strokes
+from turtle_letters.letters.primitives import Line, Pen, Turn, Written, plan_strokes
 
 # The lab's ideal N from the turtle's start pose (the lab's own figures).
 LAB_N_VERTICES = [(5.5444, 5.5444), (5.5444, 8.5444), (8.0193, 6.0696), (8.0193, 9.0696)]
@@ -58,3 +58,30 @@ def distances_off(path, strokes, travel):
 def worst_off(path, strokes, travel):
     """How far the path strays from the strokes and travel segments, m."""
     return max(distances_off(path, strokes, travel))
+
+
+ROUND_TRIPS_A_STROKE = 20   # what a slow network may cost each stroke of the lab's N
+
+
+def lab_n():
+    """The lab's N from the centre, as the package plans it: its primitives."""
+    centre = WORLD_SIZE / 2
+    return primitives_of('N', [(centre, centre)], PlannedPose(centre, centre, 0.0))[0]
+
+
+def lab_n_plan_s(mode, speed=1.0, turn_speed=0.25):
+    """The lab's N's time by its plan: its lines at `speed`, and (but in
+    smooth mode, which turns on the way) its turns at `turn_speed`."""
+    lines = sum(abs(p.length) for p in lab_n() if isinstance(p, Line)) / speed
+    turns = sum(abs(p.angle) for p in lab_n() if isinstance(p, Turn)) / turn_speed
+    return lines if mode == 'smooth' else lines + turns
+
+
+def slow_network_budget_s(mode, delay_s, jitter_s):
+    """The longest the lab's N may take over a network `delay_s` +- `jitter_s`
+    late each way: its plan's time and a tenth, and what the delay costs,
+    ROUND_TRIPS_A_STROKE round trips for each of its 6 strokes (a stroke
+    ends on a pose that shows the turtle there, and a correction waits for
+    the commands before it to show)."""
+    round_trip = 2 * (delay_s + jitter_s) + SIM_TICK
+    return lab_n_plan_s(mode) * 1.1 + 6 * ROUND_TRIPS_A_STROKE * round_trip

@@ -9,11 +9,10 @@ import random
 
 import pytest
 
-from support.accuracy import primitives_of
+from support.accuracy import lab_n, slow_network_budget_s
 from support.ticks import sample
-from turtle_letters.letters.geometry import PlannedPose
 from turtle_letters.letters.layout import SIM_TICK
-from turtle_letters.letters.primitives import Line, Turn
+from turtle_letters.letters.primitives import Line
 from turtle_letters.motion.executors import FeedbackExecutor, SmoothExecutor, TimedExecutor
 from turtle_letters.motion.latency import Ahead, Deadline, Latency
 from turtlesim_compat.world import CENTRE, Turtle
@@ -91,12 +90,8 @@ def drive(executors, delay, jitter, seed, latency, seconds=None, adapt=True):
     return track, tick, turtle
 
 
-def the_n():
-    return primitives_of('N', [(CENTRE, CENTRE)], PlannedPose(CENTRE, CENTRE, 0.0))[0]
-
-
 def executors_for(mode):
-    primitives = the_n()
+    primitives = lab_n()
     if mode == 'timed':
         return [lambda lat, p=p: TimedExecutor(p, 1.0, 0.25, 'sim', latency=lat)
                 for p in primitives]
@@ -107,15 +102,8 @@ def executors_for(mode):
 
 
 def worst_vertex(track, mode):
-    corners = [(p.x, p.y) for p in the_n() if isinstance(p, Line)]
+    corners = [(p.x, p.y) for p in lab_n() if isinstance(p, Line)]
     return max(min(math.dist(corner, at) for at in track) for corner in corners)
-
-
-def plan_ticks(mode):
-    primitives = the_n()
-    lines = sum(abs(p.length) for p in primitives if isinstance(p, Line)) / 1.0
-    turns = sum(abs(p.angle) for p in primitives if isinstance(p, Turn)) / 0.25
-    return (lines if mode == 'smooth' else lines + turns) / SIM_TICK
 
 
 TOLERANCE = {'timed': 0.005, 'feedback': 0.005, 'smooth': 0.01}
@@ -128,9 +116,8 @@ def test_every_mode_draws_the_n_over_a_slow_network(mode, delay, jitter):
     for seed in range(3):
         track, ticks, _ = drive(executors_for(mode), delay, jitter, seed, Latency())
         assert worst_vertex(track, mode) < TOLERANCE[mode], (seed, worst_vertex(track, mode))
-        # the plan's time, and what the delay costs: at most 20 round trips a stroke
-        round_trip = 2 * (delay + jitter) + 1
-        assert ticks < plan_ticks(mode) * 1.1 + 6 * 20 * round_trip, (seed, ticks)
+        budget = slow_network_budget_s(mode, delay * SIM_TICK, jitter * SIM_TICK)
+        assert ticks * SIM_TICK < budget, (seed, ticks * SIM_TICK, budget)
 
 
 @pytest.mark.parametrize('mode, delay', [('timed', 3), ('feedback', 3), ('smooth', 2)])
