@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """draw.py as people and scripts use it: in a terminal a progress bar, and
-Ctrl-C cancels the drawing (the turtle stops) before it exits; through a
-pipe one line per 10 %; a refused drawing or a missing server in one line,
-with its exit status."""
+Ctrl-C cancels the drawing (the turtle stops) before it exits, or, as it
+starts, leaves quietly; through a pipe one line per 10 %; a refused
+drawing or a missing server in one line, with its exit status."""
 import re
 import time
 import unittest
@@ -48,6 +48,18 @@ class DrawClient(unittest.TestCase):
         after = [p for t, p in self.poses.poses if t > pressed + STOPPED_WITHIN]
         self.assertEqual({(p.x, p.y, p.linear_velocity, p.angular_velocity) for p in after},
                          {(after[0].x, after[0].y, 0.0, 0.0)})
+
+    def test_ctrl_c_as_it_starts_or_looks_for_its_server_leaves_in_a_line(self):
+        """Early (its imports) or later (it waits 5 s for a server that is
+        not there): exit 130, never a traceback, and nothing sent. (Sooner
+        still, rosrun's own shell script is interrupted, as bash is.)"""
+        for after in (1.0, 2.5):
+            term = self.run_in_terminal('rosrun turtle_letters draw.py --ns nobody N')
+            time.sleep(after)
+            term.send_keys('C-c')
+            self.assertEqual(self.exit_status(term, 20), 130, term.screen())
+            self.assertNotIn('Traceback', term.screen())
+            self.assertNotIn('no action server', term.screen())
 
     def test_through_a_pipe_a_line_per_ten_percent_and_the_result(self):
         term = self.run_in_terminal('rosrun turtle_letters draw.py L | tee out; '

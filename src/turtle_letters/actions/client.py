@@ -16,6 +16,7 @@ import sys
 import actionlib
 import rosgraph
 import rospy
+from actionlib_msgs.msg import GoalStatus
 
 from ..msg import DrawAction, DrawGoal
 
@@ -77,6 +78,15 @@ def parse(argv):
 def main(argv=None):
     args = parse(rospy.myargv(sys.argv)[1:] if argv is None else argv)
     try:
+        return draw(args)
+    except KeyboardInterrupt:       # while it starts: nothing was sent (follow() cancels)
+        print('draw.py: interrupted before a goal was sent', file=sys.stderr)
+        return 130
+
+
+def draw(args):
+    """Find the action server, then send the goal and follow it."""
+    try:
         rosgraph.Master('/draw_client').getPid()
     except (OSError, socket.error):
         print(f'draw.py: no ROS master at {rosgraph.get_master_uri()}: start the controller '
@@ -102,13 +112,16 @@ def main(argv=None):
 
 def follow(client, goal, view):
     """Send the goal and wait for its end; Ctrl-C cancels it first."""
-    client.send_goal(goal, feedback_cb=view.show)
     try:
+        client.send_goal(goal, feedback_cb=view.show)
         while not client.wait_for_result(rospy.Duration(0.1)):
             pass
     except KeyboardInterrupt:
-        client.cancel_goal()
-        ended = client.wait_for_result(rospy.Duration(CANCEL_WAIT))
+        client.cancel_goal()        # nothing, if the goal was not sent yet
+        try:
+            ended = client.wait_for_result(rospy.Duration(CANCEL_WAIT))
+        except KeyboardInterrupt:   # a second Ctrl-C: the cancel is sent, go
+            ended = False
         view.close()
         print(f'draw.py: cancelled: {result_line(client) if ended else "no answer to the cancel"}')
         return 130
@@ -120,6 +133,10 @@ def follow(client, goal, view):
 
 def result_line(client):
     result = client.get_result()
+    if result is None and client.get_state() == GoalStatus.LOST:
+        # cancelled before the controller acknowledged it (ros/actionlib#126):
+        # the controller recalls it, or cancels it as it comes
+        return 'cancelled before the controller had answered'
     if result is None:
         return client.get_goal_status_text() or 'no result'
     if result.drawn:
