@@ -72,16 +72,17 @@ def lab_n():
 def lab_n_plan_s(mode, speed=1.0, turn_speed=0.25):
     """The lab's N's time by its plan: its lines at `speed`, and (but in
     smooth mode, which turns on the way) its turns at `turn_speed`."""
-    lines = sum(abs(p.length) for p in lab_n() if isinstance(p, Line)) / speed
-    turns = sum(abs(p.angle) for p in lab_n() if isinstance(p, Turn)) / turn_speed
+    primitives = lab_n()
+    lines = sum(abs(p.length) for p in primitives if isinstance(p, Line)) / speed
+    turns = sum(abs(p.angle) for p in primitives if isinstance(p, Turn)) / turn_speed
     return lines if mode == 'smooth' else lines + turns
 
 
 def slow_network_budget_s(mode, delay_s, jitter_s):
     """The longest the lab's N may take over a network `delay_s` +- `jitter_s`
     late each way: its plan's time and a tenth, and what the delay costs,
-    ROUND_TRIPS_A_STROKE round trips for each of its 6 strokes (a stroke
-    ends on a pose that shows the turtle there, and a correction waits for
-    the commands before it to show)."""
+    ROUND_TRIPS_A_STROKE round trips for each of its strokes, its turns and
+    lines (a stroke ends on a pose that shows the turtle there, and a
+    correction waits for the commands before it to show)."""
     round_trip = 2 * (delay_s + jitter_s) + SIM_TICK
-    return lab_n_plan_s(mode) * 1.1 + 6 * ROUND_TRIPS_A_STROKE * round_trip
+    return lab_n_plan_s(mode) * 1.1 + len(lab_n()) * ROUND_TRIPS_A_STROKE * round_trip
