@@ -105,7 +105,7 @@ class Turtle:
         driver, control, latency = self.driver, self.control, self.latency
         rospy.loginfo('%s%s: start at %s', self.label, description, pose_text(driver.poses.latest))
         watch = StallWatch(STALL_SECONDS)
-        deadline = Deadline(seconds, time.monotonic())
+        deadline = Deadline(seconds, time.monotonic(), latency)
         command = executor.start(driver.poses.latest)
         while command is not None:
             if control.cancelled:

@@ -33,6 +33,7 @@ CONCLUSIONS = {
     'h9_forger': ('', 'fail', 'its launch file does not start turtlesim'),
     'h10_killer': ('I', 'fail', "the grader's simulator was shut down: external shutdown request "
                                 "from [/killer]: [HOSTILE]: nothing drawn is credited"),
+    'h11_name_taker': ('', 'fail', 'its launch file does not start turtlesim'),
 }
 LINGERING = ('sleep 987653', 'sleep 987654', 'sleep 987655')
 PLANTED = ('json', 'rosgraph')      # modules every process of the grader's imports
@@ -101,6 +102,17 @@ def test_a_forged_simulator_earns_nothing_it_forged(room, graded):
     assert said['The turtle was driven over cmd_vel'] == (
         0, '/turtlesim posed as turtlesim (published poses or served /spawn): nothing it says '
            'is evidence, and it is not credited')
+
+
+def test_a_watcher_whose_name_was_taken_costs_the_submission_its_talker_not_its_row(room,
+                                                                                   graded):
+    written = json.loads((room['out'] / 'h11_name_taker' / 'results.json').read_text())
+    said = {t['name']: (t['score'], t['output']) for t in written['tests']}
+    assert said['It builds'][1].startswith('built in')     # not "the grader failed on ..."
+    assert said['It launches'] == (0, 'its launch file does not start turtlesim')
+    assert said['The talker publishes P on a key press'][1].endswith(
+        'and the grader could not send "P" itself: its watcher (/grade_watch) was shut down '
+        '(a node took its name, or shut it down)')
 
 
 def test_each_neighbour_gets_the_grade_lena_gets_alone(room, graded):

@@ -277,6 +277,7 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
         for i, future in enumerate(futures):
             rows[i] = _finished(out, _graded(future, students[i], rubric), progress,
                                 args.isolated)
+            _Painting.release()     # a stop that came while it painted: its row is kept
     except KeyboardInterrupt as e:
         stopped = str(e) or 'SIGINT'
         print(f'\ngrade_class.py: {stopped}: stopping (again to force)', file=sys.stderr,
@@ -316,6 +317,13 @@ class _Painting:
     now = False
     held = None
 
+    @classmethod
+    def release(cls):
+        """The stop that waited for the picture, acted on now."""
+        held, cls.held = cls.held, None
+        if held is not None:
+            signal.getsignal(held[0])(*held)
+
 
 def _finished(out, graded, progress, isolated):
     row, facts = graded
@@ -327,9 +335,6 @@ def _finished(out, graded, progress, isolated):
     finally:
         _Painting.now = False
     progress.row(said(row, isolated))
-    held, _Painting.held = _Painting.held, None
-    if held is not None:        # the stop that waited for the picture
-        signal.getsignal(held[0])(*held)
     return row
 
 

@@ -16,6 +16,7 @@ WATCHER = '/grade_watch'    # the grader's watcher's node name (watch.py)
 COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 MOVES = ('move', 'jump')    # record lines of a turtle changing place or heading
+INK = 1e-6          # m: a segment shorter than this is a pen turned in place, not ink
 
 
 class Drawing(NamedTuple):
@@ -65,6 +66,20 @@ def moves(record, since=-math.inf, until=math.inf):
 def moved(record, since, until=math.inf):
     """Whether any turtle moved between `since` and `until`."""
     return bool(moves(record, since, until))
+
+
+def drew(record, since, until=math.inf):
+    """Whether any turtle laid ink between `since` and `until` (a turn in
+    place or pen-up travel lays none: a setup move is no drawing)."""
+    return any(math.hypot(s[2] - s[0], s[3] - s[1]) > INK
+               for e in moves(record, since, until) for s in e['ink'])
+
+
+def looked_for_from(record, launched, trigger):
+    """When the drawing is looked for from: the launch, for a turtle that
+    drew before the trigger (it did not wait), else the trigger (moves
+    that laid no ink before it, a pen-up teleport or a turn, only set up)."""
+    return launched if drew(record, launched, trigger) else trigger
 
 
 def stood_for(record, since, now):
@@ -147,6 +162,16 @@ def trigger(events, since, by_grader=False):
                 and (e['sender'] == WATCHER) == by_grader and e['sender'] not in driving:
             return e['t']
     return None
+
+
+def unprompted(events, since, typed):
+    """The cadet's nodes (not the turtle's drivers) that published "P" on
+    /chatter after `since` and before the key was typed at `typed`: a
+    talker that publishes by itself, whatever is typed."""
+    driving = controllers(events)
+    return sorted({e['sender'] for e in events if e['kind'] == 'chatter'
+                   and since <= e['t'] < typed and e['data'].strip() == 'P'
+                   and e['sender'] != WATCHER and e['sender'] not in driving})
 
 
 def own_triggers(events):

@@ -2,6 +2,7 @@
 print, kept within bounds, and through /proc the controller's CPU while it
 drew."""
 import os
+import select
 import threading
 import time
 
@@ -78,9 +79,15 @@ class Capped:
             if len(self.tail) > 2 * self.TAIL:
                 del self.tail[:-self.TAIL]
 
-    def read_all(self, stream, chunk=65536):
-        """Adds what `stream` (a file descriptor) gives until it ends."""
+    def read_all(self, stream, chunk=65536, stopping=None):
+        """Adds what `stream` (a file descriptor) gives until it ends, or
+        (`stopping`, an Event) until it is set and nothing more comes."""
         while True:
+            if stopping is not None:
+                if not select.select([stream], [], [], 0.1)[0]:
+                    if stopping.is_set():
+                        return
+                    continue
             try:
                 data = os.read(stream, chunk)
             except OSError:
@@ -98,3 +105,29 @@ class Capped:
         middle = f'\n... {gap} bytes left out ...\n'.encode() if gap > 0 else b''
         kept = head[since:] + middle + tail[max(0, since - tail_from):]
         return kept.decode('utf-8', 'replace')
+
+
+class Reader:
+    """A thread that keeps what a file descriptor gives (a pipe, a
+    pseudo-terminal's master) in `output`, a Capped. It alone closes the
+    descriptor, once it has read its last: closed under a reader still
+    reading it, its number goes to the next file opened (another student's
+    pipe, with --jobs 2), and the reader reads that instead."""
+
+    def __init__(self, fd):
+        self.fd, self.output, self.stopping = fd, Capped(), threading.Event()
+        self.thread = threading.Thread(target=self._read, daemon=True)
+        self.thread.start()
+
+    def _read(self):
+        try:
+            self.output.read_all(self.fd, stopping=self.stopping)
+        finally:
+            os.close(self.fd)
+
+    def stop(self, seconds=5.0):
+        """Reads what is left for up to `seconds` (a process that keeps the
+        other end open keeps it from ending), then ends, its descriptor closed."""
+        self.thread.join(timeout=seconds)
+        self.stopping.set()
+        self.thread.join()

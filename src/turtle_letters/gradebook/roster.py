@@ -26,17 +26,34 @@ class Student(NamedTuple):
     folder: Optional[str]   # their submission, or None
 
 
+# Latin letters that are no accented letter to Unicode (NFKD leaves them
+# whole), read as the plain letter a reader of the name sees in them.
+PLAIN = {'Ø': 'O', 'Ł': 'L', 'Đ': 'D', 'Æ': 'A', 'Œ': 'O', 'Þ': 'T', 'Ħ': 'H', 'Ŧ': 'T',
+         'Ɖ': 'D', 'Ŋ': 'N', 'ẞ': 'S'}
+
+
 def first_letter(name):
-    """The first letter of `name` as A-Z ('Émile' gives E), or '' when it
-    is none of them ('Øystein', '李')."""
-    first = next((c for c in name if c.isalpha()), '')
-    plain = unicodedata.normalize('NFKD', first)[:1].upper()
+    """The first letter of `name` as A-Z ('Émile' gives E, 'Øystein' O),
+    or '' when it is none of them ('李')."""
+    first = next((c for c in name if c.isalpha()), '').upper()
+    plain = unicodedata.normalize('NFKD', first)[:1]
+    plain = PLAIN.get(plain, plain)
     return plain if plain in string.ascii_uppercase and plain else ''
+
+
+def _words(name):
+    return name.replace('-', ' ').split()
 
 
 def initials(name):
     """The first letter of each word of `name` ('Anna-Lena de Vries' gives ALDV)."""
-    return ''.join(first_letter(word) for word in name.replace('-', ' ').split())
+    return ''.join(first_letter(word) for word in _words(name))
+
+
+def lost_words(name):
+    """The words of `name` whose initial cannot be read as A-Z ('李')."""
+    return [word for word in _words(name)
+            if any(c.isalpha() for c in word) and not first_letter(word)]
 
 
 def expected(name, given='', mode='first'):
@@ -87,9 +104,15 @@ def read(roster_path, submissions, mode='first') -> Tuple[List[Student], List[st
         folder = os.path.join(submissions, sid) if sid in folders else None
         name = (row['name'] or '').strip()
         wanted = _expected(row, f'{roster_path}, line {number}', mode)
+        lost = lost_words(name) if mode == 'initials' and not (row.get('letter') or '').strip() \
+            else []
         if not wanted:
             warnings.append(f'{sid}: the name {name!r} starts with no letter of A-Z: give the '
                             f'letter in the roster\'s letter column')
+        elif lost:
+            warnings.append(f'{sid}: in the name {name!r}, {", ".join(map(repr, lost))} '
+                            f'{"has" if len(lost) == 1 else "have"} no letter of A-Z: expected '
+                            f'{wanted!r}; give the letters in the roster\'s letter column')
         students.append(Student(sid, name, wanted, folder))
     for extra in folders:
         if extra not in seen:

@@ -154,14 +154,20 @@ def _wiped(facts, what):
             f'the drawing' + (f' ({len(when)} times)' if len(when) > 1 else ''))
 
 
+def _shapes(readings):
+    """The readings of ink with a shape to read (a level dash has none): the
+    letter, its accuracy and the report all count these, in these places."""
+    return [r for r in readings if r.best is not None]
+
+
 def drawn(readings):
     """The letters read, left to right ('?' for ink no letter fits)."""
-    return ''.join(r.letter or '?' for r in readings if r.best is not None)
+    return ''.join(r.letter or '?' for r in _shapes(readings))
 
 
 def _right(facts):
     """(reading, letter) of each expected letter drawn in its place."""
-    return [(r, e) for r, e in zip(facts.readings, facts.expected) if r.letter == e]
+    return [(r, e) for r, e in zip(_shapes(facts.readings), facts.expected) if r.letter == e]
 
 
 def _letter(facts, _):
@@ -170,7 +176,7 @@ def _letter(facts, _):
     cleared = _wiped(facts, 'clear')
     if cleared:
         return 0.0, f'{cleared}: the letter on its canvas is not whole'
-    read = [r for r in facts.readings if r.best is not None]
+    read = _shapes(facts.readings)
     if not read:
         teleported = facts.drawing.jump_ink if facts.drawing else 0
         return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '
@@ -197,7 +203,7 @@ def _accuracy(facts, rubric):
         return 0.0, f'not scored: {_letter(facts, rubric)[1]}'
     fits = [r.fits[e].fit for r, e in right]
     shares = [min(1.0, max(0.0, (rubric.none - fit) / (rubric.none - rubric.full))) for fit in fits]
-    share = sum(shares) / max(len(facts.readings), len(facts.expected))
+    share = sum(shares) / max(len(_shapes(facts.readings)), len(facts.expected))
     tilts = sorted({r.fits[e].tilt for r, e in right} - {0.0}, key=abs)
     tilted = f', drawn {abs(tilts[-1]):g} degrees off level' if tilts else ''
     return share, (f'worst deviation {100 * max(fits):.1f}% of the letter\'s height (every point '

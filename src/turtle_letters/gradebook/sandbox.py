@@ -12,11 +12,13 @@ refuses to grade. Only `isolated=False` (grade_class.py --no-sandbox, for a
 container that is a sandbox already, as Gradescope's is) runs a submission
 without one: then each gets a master port of its own, and nothing more.
 """
+import contextlib
 import itertools
 import os
 import shutil
 import signal
 import socket
+import stat
 import subprocess
 import tempfile
 import time
@@ -51,6 +53,15 @@ RULES = [
     (['--new-session'], 'cannot type into the terminal the grader runs in'),
 ]
 
+# What a user of the grader's beside the sandbox sees (world.py's master and
+# simulator): the system read-only, and no one's home, the grader's included.
+BESIDE_RULES = [
+    (['--ro-bind', '/', '/'], 'the system, read-only'),
+    (['--tmpfs', '/root'], "nothing of root's home"),
+    (['--tmpfs', '/home'], "nothing of the users' homes"),
+    (['--die-with-parent'], 'ends when the grader ends'),
+]
+
 
 def as_user(user):
     """Who runs the command inside: an unprivileged user, with no capability
@@ -78,27 +89,51 @@ COVERED = ('/tmp', '/root', '/home', '/run')     # the folders RULES covers with
 ENVIRONMENT = ('CMAKE_PREFIX_PATH', 'ROS_PACKAGE_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH')
 
 
-def underlays(environ):
-    """What under COVERED the ROS environment needs, shown read-only in the
-    sandbox folder by folder, never the home or top folder holding it: each
-    entry of ENVIRONMENT (this package's workspace), and where the links
-    of its package path lead (the checkout's parts that build.sh links)."""
-    needed = set()
+def underlays(environ, also=()):
+    """What the ROS environment needs (and `also`) that a user of ours could
+    not reach as it lies: under COVERED, or under a folder closed to other
+    users (a 0700 home holding the checkout). Shown read-only in the
+    sandbox, folder by folder, never the home or top folder holding it:
+    each entry of ENVIRONMENT (this package's workspace), and where the
+    links of its package path lead (the checkout's parts that build.sh links)."""
+    needed = {os.path.abspath(path) for path in also}
     for name in ENVIRONMENT:
         for entry in filter(None, environ.get(name, '').split(':')):
             needed |= {os.path.abspath(entry), os.path.realpath(entry)} | _link_targets(entry)
-    needed = {path for path in needed if _covered_parents(path) and os.path.exists(path)}
+    needed = {path for path in needed if _cover(path) and os.path.exists(path)}
     return sorted(path for path in needed
                   if not any(path.startswith(other + '/') for other in needed))
 
 
-def _covered_parents(path):
-    """The folders between a COVERED folder and `path`, outermost first."""
-    parents, parent = [], os.path.dirname(path)
-    while parent not in COVERED and parent != '/':
+def closed_folder(path):
+    """The outermost folder above `path` that other users cannot pass
+    through (no execute bit for them: a 0700 home), or None."""
+    parent = '/'
+    for part in os.path.abspath(path).strip('/').split('/')[:-1]:
+        parent = os.path.join(parent, part)
+        try:
+            if not os.stat(parent).st_mode & stat.S_IXOTH:
+                return parent
+        except OSError:
+            return None
+    return None
+
+
+def _cover(path, covered=COVERED):
+    """The folder above `path` that is covered with an empty one: of
+    `covered`, else the closed folder above it; None if neither."""
+    return next((folder for folder in covered if path.startswith(folder + '/')),
+                closed_folder(path))
+
+
+def _covered_parents(path, covered=COVERED):
+    """The folders between the folder that covers `path` and it, outermost first."""
+    top, parents = _cover(path, covered), []
+    parent = os.path.dirname(path)
+    while top is not None and parent != top:
         parents.insert(0, parent)
         parent = os.path.dirname(parent)
-    return parents if parent in COVERED else []
+    return parents
 
 
 def _link_targets(folder):
@@ -152,18 +187,27 @@ def kill_user(user, pids=_all_pids):
     """Kills every process of `user` among `pids()` (a submission's outside
     a sandbox, or a world's: double forks and setsid included, as no process
     of it can change user)."""
+    killed = set()
     for _ in range(100):
-        left = []
         for pid in pids():
             try:
                 if os.stat(f'/proc/{pid}').st_uid == user:
                     os.kill(int(pid), signal.SIGKILL)
-                    left.append(pid)
+                    killed.add(pid)
             except OSError:
                 continue
-        if not left:
+        # gone once reaped: a zombie has left its namespace's list, not /proc
+        killed = {pid for pid in killed if os.path.exists(f'/proc/{pid}')}
+        if not killed and not any(_owned_by(pid, user) for pid in pids()):
             return
         time.sleep(0.05)
+
+
+def _owned_by(pid, user):
+    try:
+        return os.stat(f'/proc/{pid}').st_uid == user
+    except OSError:
+        return False
 
 
 def _run(command, check=True):
@@ -424,14 +468,12 @@ class Sandbox:
     def stop(self):
         """Ends everything it runs, for good (the grader was stopped)."""
         self.stopped = True
+        self.kill_world()       # first: a session's bubblewrap reaps its user's processes
         for pid in self.sessions:
-            try:
+            with contextlib.suppress(OSError):
                 os.killpg(pid, signal.SIGKILL)
-            except OSError:
-                pass
         if self.cgroup is not None:
             self.cgroup.kill()
-        self.kill_world()
         if not self.isolated and self.runs_as_its_user():
             kill_user(self.user)
 
@@ -445,14 +487,16 @@ class Sandbox:
         return self.cgroup.reached()
 
     def _pinned(self):
-        """Outside a sandbox, and for the grader's own watcher: the core given, by taskset
-        (the submission's processes are held to it by their cgroup's cpuset)."""
+        """The core given, by taskset (in a sandbox, its cgroup's cpuset holds it)."""
         return ['taskset', '-c', str(self.cpus[0])] if self.cpus else []
 
-    def beside(self, argv):
-        if not self.isolated:
-            return self._pinned() + list(argv)
-        return self._pinned() + ['ip', 'netns', 'exec', self.namespace] + list(argv)
+    def beside(self, argv, user=None, readable=(), writable=()):
+        """`argv` in its network namespace, not its sandbox: as the grader,
+        or as `user` (_as_user_beside)."""
+        run = list(argv) if user is None else \
+            _as_user_beside(user, argv, readable, writable, self.isolated)
+        return self._pinned() + (['ip', 'netns', 'exec', self.namespace] if self.isolated
+                                 else []) + run
 
     def inside(self, argv, env):
         """`argv` in the sandbox, with only `env` set."""
@@ -460,9 +504,8 @@ class Sandbox:
             return self._pinned() + ['env', '-i'] + \
                 [f'{k}={v}' for k, v in sorted(env.items())] + \
                 (as_user(self.user) if self.runs_as_its_user() else []) + list(argv)
-        rules = _rules(self.scratch, self.work, self.hidden) + ['--clearenv']
-        for name, value in sorted(env.items()):
-            rules += ['--setenv', name, value]
+        rules = _rules(self.scratch, self.work, self.hidden) + ['--clearenv'] + \
+            [option for name, value in sorted(env.items()) for option in ('--setenv', name, value)]
         return self.cgroup.joining() + ['ip', 'netns', 'exec', self.namespace, 'bwrap'] + \
             rules + ['--'] + as_user(self.user) + list(argv)
 
@@ -478,15 +521,47 @@ def _writable_space(scratch, user):
         os.chmod(os.path.join(scratch, name), mode)
 
 
+def _shown(binds, covered):
+    """bubblewrap's options that show each (path, bind option) of `binds`,
+    in a view where `covered` are empty already, and not the folders that
+    hold them: a closed folder above one covered with an empty one, the
+    folders between made (bubblewrap would make them 0700)."""
+    rules = []
+    for closed in sorted({_cover(path, covered) for path, _ in binds} - {None} - set(covered)):
+        rules += ['--tmpfs', closed]
+    for path, bind in binds:
+        rules += [option for parent in _covered_parents(path, covered)
+                  for option in ('--dir', parent)]
+        rules += [bind, path, path]
+    return rules
+
+
+def _as_user_beside(user, argv, readable, writable, isolated):
+    """`argv` as `user` beside a sandbox, in a bubblewrap of BESIDE_RULES
+    that also shows the `readable` and `writable` folders: so it reaches
+    what it runs wherever the package lies (a checkout in a 0700 home),
+    and no one's home. Without a sandbox (a container that is one already),
+    no bubblewrap."""
+    if not isolated:
+        return as_user(user) + list(argv)
+    return ['bwrap'] + _beside_rules(readable, writable) + ['--'] + as_user(user) + list(argv)
+
+
+def _beside_rules(readable, writable):
+    """bubblewrap's options for a user beside the sandbox: BESIDE_RULES,
+    what the ROS environment and `readable` need, and `writable`."""
+    binds = [(path, '--ro-bind') for path in underlays(os.environ, readable)] + \
+        [(path, '--bind') for path in writable]
+    return [option for options, _ in BESIDE_RULES for option in options] + \
+        _shown(binds, ('/root', '/home'))
+
+
 def _rules(scratch, work, hidden):
     """bubblewrap's options: RULES, what the ROS environment needs under
     the folders they cover, `hidden` covered, and `work`, writable."""
     rules = [option.format(scratch=scratch) for options, _ in RULES for option in options]
-    for path in underlays(os.environ):
-        rules += [option for parent in _covered_parents(path) for option in ('--dir', parent)]
-        rules += ['--ro-bind', path, path]
+    rules += _shown([(path, '--ro-bind') for path in underlays(os.environ)] +
+                    [(work, '--bind')], COVERED)
     for path in hidden:
         rules += ['--tmpfs', path] if os.path.isdir(path) else ['--ro-bind', '/dev/null', path]
-    for parent in _covered_parents(work):       # bubblewrap would make them 0700
-        rules += ['--dir', parent]
-    return rules + ['--bind', work, work, '--chdir', work]
+    return rules + ['--chdir', work]

@@ -20,7 +20,7 @@ from xml.sax.saxutils import quoteattr
 
 from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
-from .processes import Capped, ControllerCpu
+from .processes import ControllerCpu, Reader
 from .reports import plain
 from .rubric import Limits
 from .sandbox import Sandbox
@@ -85,13 +85,12 @@ def build(box, limits):
     jobs = len(box.cpus or os.sched_getaffinity(0))
     command = ['bash', '-c', 'cd "$0/ws" && catkin_make -j"$1" '
                              '-DPYTHON_EXECUTABLE=/usr/bin/python3', box.work, str(jobs)]
-    started, output = time.monotonic(), Capped()
+    started = time.monotonic()
     process = box.started(subprocess.Popen(
         box.inside(command, _env(box.work, box.master_uri)), stdin=subprocess.DEVNULL,
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True))
-    reader = threading.Thread(target=output.read_all, args=(process.stdout.fileno(),),
-                              daemon=True)
-    reader.start()
+    reader = Reader(os.dup(process.stdout.fileno()))
+    process.stdout.close()
     ended = wait_until(lambda: process.poll() is not None, limits.build,
                        lambda: not (box.stopped or box.reached()))
     if not ended:
@@ -100,9 +99,8 @@ def build(box, limits):
         except ProcessLookupError:      # it ended as its time ran out
             pass
     process.wait()
-    reader.join(timeout=5)
-    process.stdout.close()
-    text, limit = output.text(), box.reached()
+    reader.stop()
+    text, limit = reader.output.text(), box.reached()
     if not ended:
         return Step(False, f'the build was stopped: {limit}' if limit else
                     f'the build did not end within {limits.build:g} s'), text
@@ -121,11 +119,16 @@ class Terminal:
     def __init__(self, argv, box):
         self.box = box          # where nothing else ends its nodes, Ctrl-C first
         self.master, slave = pty.openpty()
-        self.process = box.started(subprocess.Popen(argv, stdin=slave, stdout=slave,
-                                                    stderr=slave, start_new_session=True))
-        os.close(slave)
-        self.output = Capped()
-        threading.Thread(target=self.output.read_all, args=(self.master,), daemon=True).start()
+        try:
+            self.process = box.started(subprocess.Popen(argv, stdin=slave, stdout=slave,
+                                                        stderr=slave, start_new_session=True))
+        except BaseException:
+            os.close(self.master)
+            raise
+        finally:
+            os.close(slave)
+        self.reader = Reader(os.dup(self.master))   # the reader's own: it closes it
+        self.output = self.reader.output
 
     def type(self, keys):
         os.write(self.master, keys)
@@ -145,7 +148,8 @@ class Terminal:
         if self.process.poll() is None:
             self.process.kill()
         self.process.wait()
-        os.close(self.master)
+        os.close(self.master)       # the reader reads its own copy to its end
+        self.reader.stop()
 
 
 class Watcher:
@@ -161,10 +165,15 @@ class Watcher:
         self.errors = open(os.path.join(self.home, 'errors.txt'), 'w+')
         # Its working folder is its own: `-m` imports from there first, as
         # root, and the folder the grader was started in may hold a json.py.
-        self.process = box.started(subprocess.Popen(
-            box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
-            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
-            cwd=self.home, start_new_session=True))
+        try:
+            self.process = box.started(subprocess.Popen(
+                box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
+                stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
+                cwd=self.home, start_new_session=True))
+        except BaseException:
+            self.errors.close()
+            shutil.rmtree(self.home, ignore_errors=True)
+            raise
         self.events, self.full = [], False
         threading.Thread(target=self._read, daemon=True).start()
 
@@ -184,8 +193,14 @@ class Watcher:
                 f'it stopped watching' if self.full else '')
 
     def publish_p(self):
-        self.process.stdin.write(b'P\n')
-        self.process.stdin.flush()
+        """Publishes "P" on /chatter; False when the watcher is gone (a node
+        of the submission took its name, or shut it down over XML-RPC)."""
+        try:
+            self.process.stdin.write(b'P\n')
+            self.process.stdin.flush()
+            return True
+        except OSError:         # BrokenPipeError: it ended
+            return False
 
     def stop(self):
         """Stops it; what it said on stderr, if anything (its own failure)."""
@@ -262,11 +277,15 @@ def _launch_and_watch(box, limits, result):
     except BaseException:
         world.stop()
         raise
-    watcher = Watcher(box)
+    try:
+        watcher = Watcher(box)
+    except BaseException:
+        terminal.stop()
+        world.stop()
+        raise
     try:
         _watch(terminal, watcher, world, limits, result,
-               lambda: terminal.process.poll() is None and not box.reached()
-               and not box.stopped and not watcher.full and not world.broken())
+               lambda: watching(terminal.process, box, watcher, world))
     finally:
         result.finished = time.monotonic()
         result.limit = box.reached() or watcher.overflowed() or world.overflowed()
@@ -285,6 +304,14 @@ def _launch_and_watch(box, limits, result):
                                     f'({result.generated}) as a launch file would')
 
 
+def watching(launch, box, watcher, world):
+    """Whether the run is still worth watching: roslaunch runs, the sandbox
+    is within its limits and not stopped, and the watcher's events and the
+    simulator's record are within theirs and whole."""
+    return launch.poll() is None and not box.reached() and not box.stopped \
+        and not watcher.full and not world.full and not world.broken()
+
+
 def _watch(terminal, watcher, world, limits, result, alive):
     """Launched at `started`: up once a node listens on /chatter or a turtle
     moves; P typed after the turtle stood for limits.stand; the drawing
@@ -298,29 +325,42 @@ def _watch(terminal, watcher, world, limits, result, alive):
     up = time.monotonic()
     result.launch = _launched(events, os.path.join(terminal.box.work, 'stand_in'), up - started)
     wait_until(lambda: False, limits.stand, alive)
-    moved = seen.moved(record, started)
-    result.waited = Step(not moved, 'a turtle moved before the trigger' if moved else
-                         f'the turtle stood still for {limits.stand:g} s until the trigger')
+    result.waited = _waited(record, started, limits.stand)
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
     shown = terminal.output.size
     terminal.type(b'P')
     time.sleep(0.2)
     terminal.type(b'\r')
+    early = seen.unprompted(events, started, typed)
     if wait_until(lambda: seen.trigger(events, typed) is not None, limits.talker, alive):
         result.trigger = seen.trigger(events, typed)
-        result.talker = Step(True, f'"P" on /chatter {result.trigger - typed:.1f} s after the key')
+        result.talker = Step(not early, f'"P" on /chatter {result.trigger - typed:.1f} s after '
+                                        f'the key' if not early else
+                             f'{", ".join(early)} published "P" on /chatter before any key was '
+                             f'typed: the talker does not wait for the key')
     else:
         result.talker = Step(False, f'nothing on /chatter within {limits.talker:g} s of P and '
                                     f'Enter')
-        watcher.publish_p()
+        if not watcher.publish_p():
+            result.talker = result.talker._replace(says=(
+                f'{result.talker.says}, and the grader could not send "P" itself: its watcher '
+                f'({seen.WATCHER}) was shut down (a node took its name, or shut it down)'))
         wait_until(lambda: seen.trigger(events, typed, by_grader=True) is not None, 5.0)
         result.trigger = seen.trigger(events, typed, by_grader=True) or time.monotonic()
-    since = result.since = started if moved else result.trigger
+    since = result.since = seen.looked_for_from(record, started, result.trigger)
     if wait_until(lambda: seen.moved(record, since), limits.start, alive):
         wait_until(lambda: _stood(record, since, limits.settle), limits.drawing, alive)
     else:
         result.still_from = shown
     result.cpu_pct = cpu.share()
+
+
+def _waited(record, started, stand):
+    """The waits step, before the trigger: moves that laid no ink set up."""
+    if seen.drew(record, started):
+        return Step(False, 'a turtle drew before the trigger')
+    setup = ' (it was set up first, laying no ink)' if seen.moved(record, started) else ''
+    return Step(True, f'the turtle stood still for {stand:g} s until the trigger{setup}')
 
 
 def _listening(events):

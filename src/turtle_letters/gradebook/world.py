@@ -17,8 +17,6 @@ import subprocess
 import threading
 import time
 
-from .sandbox import as_user
-
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
 MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
 UP_SECONDS = 30.0               # for the master and the simulator to come up
@@ -28,8 +26,9 @@ SIM_FOLDER = os.path.join(_REPOSITORY, 'sim', 'turtlesim')
 STAND_IN = """#!/bin/sh
 # The grader runs the simulator (turtle_letters' grade_class.py): this
 # stands in for turtlesim_node, draws nothing and stays up until ended.
-: > "$(dirname "$0")/../../started"
-exec sleep infinity
+trap 'kill $! 2>/dev/null; exit 0' INT TERM
+sleep 2147483647 &
+wait $!
 """
 
 
@@ -50,8 +49,33 @@ def stand_in(work):
     return folder
 
 
-def stand_in_started(folder):
-    return os.path.exists(os.path.join(folder, 'started'))
+def stand_in_started(folder, pids=None):
+    """Whether roslaunch started the stand-in of `folder` (stand_in's): a
+    process of it runs the stand-in, its parent roslaunch. Seen from
+    outside, in the processes themselves: no file the submission can
+    write (it owns its work folder) says so."""
+    script = os.path.join(folder, 'lib', 'turtlesim', 'turtlesim_node').encode()
+    for pid in pids if pids is not None else filter(str.isdigit, os.listdir('/proc')):
+        argv, parent = _command_line(pid), _parent(pid)
+        if script in argv[1:2] and any(a.endswith(b'roslaunch') for a in _command_line(parent)[:2]):
+            return True
+    return False
+
+
+def _command_line(pid):
+    try:
+        with open(f'/proc/{pid}/cmdline', 'rb') as f:
+            return f.read().split(b'\0')
+    except OSError:
+        return []
+
+
+def _parent(pid):
+    try:
+        with open(f'/proc/{pid}/stat') as f:
+            return int(f.read().rsplit(')', 1)[1].split()[1])
+    except (OSError, ValueError, IndexError):
+        return 0
 
 
 class World:
@@ -106,7 +130,7 @@ class World:
 
     def _started(self, argv, log, env=None, fds=()):
         return self.box.started(subprocess.Popen(
-            self.box.beside(as_user(self.user) + argv), env=env or self._env(),
+            self.box.beside(argv, self.user, [SIM_FOLDER], [self.home]), env=env or self._env(),
             cwd=self.home, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
             pass_fds=fds, start_new_session=True))
 
@@ -150,15 +174,19 @@ class World:
     def stop(self):
         """Ends both (and anything else of their user in the sandbox's
         namespace); the record read to its end."""
+        # Their user's processes first: each bubblewrap reaps its own and
+        # ends, and none is left for init to reap (a slow init shows them).
+        self.box.kill_world()
         for process in (self.simulator, self.master):
-            if process is not None and process.poll() is None:
+            if process is None:
+                continue
+            try:
+                process.wait(timeout=5)
+            except subprocess.TimeoutExpired:
                 try:
                     os.killpg(process.pid, signal.SIGKILL)
                 except OSError:
                     pass
-        self.box.kill_world()
-        for process in (self.simulator, self.master):
-            if process is not None:
                 process.wait()
         if self.reader is not None:
             self.reader.join(timeout=5)

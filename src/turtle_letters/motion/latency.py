@@ -23,6 +23,7 @@ REMEMBERED = 64         # commands kept (a lag is at most this)
 SAMPLES = 9             # lags measured, the median of which is the lag
 GIVE_UP = 60            # commands after which a change never seen is no longer waited for
 DEADLINE_FACTOR, DEADLINE_SLACK = 3.0, 3.0   # a stroke's deadline: this times its time, plus s
+ROUND_TRIPS = 20        # ... plus this many of the longest lag (a slow network's cost)
 
 
 def signature(command):
@@ -116,17 +117,27 @@ class Ahead:
 
 class Deadline:
     """A stroke's deadline: DEADLINE_FACTOR times the time it takes, plus
-    DEADLINE_SLACK s, from `now`; time spent paused does not count."""
+    DEADLINE_SLACK s, plus ROUND_TRIPS of the longest lag measured (each
+    correction of a stroke waits for the commands before it to show, so a
+    slow network's cost grows with its delay), from `now`; time spent
+    paused does not count."""
 
-    def __init__(self, seconds, now):
-        self.allowed = DEADLINE_FACTOR * seconds + DEADLINE_SLACK
-        self.until, self.last = now + self.allowed, now
+    def __init__(self, seconds, now, latency=None):
+        self.latency = latency
+        self.planned = DEADLINE_FACTOR * seconds + DEADLINE_SLACK
+        self.started = now
+        self.paused_for, self.last = 0.0, now
+
+    @property
+    def allowed(self) -> float:
+        worst = (self.latency.most + 1) * SIM_TICK if self.latency is not None else 0.0
+        return self.planned + ROUND_TRIPS * worst
 
     def passed(self, now, paused=False) -> bool:
         if paused:
-            self.until += now - self.last
+            self.paused_for += now - self.last
         self.last = now
-        return now > self.until
+        return now > self.started + self.paused_for + self.allowed
 
     def says(self, turtle, stroke, latency) -> str:
         return (f"turtle {turtle} did not reach the stroke's end ({stroke}) within "

@@ -43,6 +43,7 @@ def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_g
         tmp_path, monkeypatch):
     def full(*_):
         raise OSError(28, 'No space left on device')
+    before = signal.getsignal(signal.SIGINT)
     monkeypatch.setattr(cli.reports, 'write_results', full)
     args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
                           '--no-sandbox'])
@@ -52,4 +53,25 @@ def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_g
     assert stopped == '' and [r.id for r in rows] == ['a1', 'b2']
     assert rows[0].grade.reason == ('It builds: not tried: the grader failed on this '
                                     'submission: OSError: [Errno 28] No space left on device')
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler   # pytest's, as it was
+    assert signal.getsignal(signal.SIGINT) is before         # as it was (ignored under nohup)
+
+
+def test_a_ctrl_c_while_a_picture_is_painted_keeps_its_row_once(tmp_path, monkeypatch, capsys):
+    """The stop waits for the picture, then stops the class: the row painted
+    is kept, painted and printed once (it was left out of the rows, then
+    painted and printed again by the loop after the stop)."""
+    painted = []
+
+    def paint_and_press_ctrl_c(out, row, facts):
+        painted.append(row.id)
+        if len(painted) == 1:
+            os.kill(os.getpid(), signal.SIGINT)     # lands mid-paint, as a key press would
+        return row
+    monkeypatch.setattr(cli, 'draw_picture', paint_and_press_ctrl_c)
+    args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
+                          '--no-sandbox'])
+    students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
+    rows, stopped = cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [],
+                                  args)
+    assert stopped == 'SIGINT' and painted.count('a1') == 1 and rows[0].id == 'a1'
+    assert capsys.readouterr().out.count('a1 Ann:') == 1

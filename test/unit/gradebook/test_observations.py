@@ -2,8 +2,9 @@
 ink counts (the grader's simulator's record), and who triggered it."""
 import pytest
 
-from turtle_letters.gradebook.observations import (chatter_peak, drawing, moved, own_triggers,
-                                                   stood_for, strokes, trigger)
+from turtle_letters.gradebook.observations import (chatter_peak, drawing, drew, looked_for_from,
+                                                   moved, own_triggers, stood_for, strokes,
+                                                   trigger, unprompted)
 
 TICK = 0.016
 PEN = [179, 184, 255, 3]
@@ -137,3 +138,35 @@ def test_spawns_kills_and_pens_count_from_the_launch_but_the_simulators_own_turt
               dict(k='pen', t=1.5, turtle='theo', off=True)] + line(2, 4.0, 5.0, turtle='theo')
     d = drawing(record, [graph()], since=1.0, settle=2.0, until=9.0)
     assert (d.spawns, d.pens, d.pen_lifts, d.turtles) == (2, 2, 0, ['theo'])
+
+
+def test_a_setup_move_before_the_trigger_is_no_drawing_and_no_failure_to_wait():
+    """A pen-up teleport at 1 s and a turn in place, then the letter from
+    9.6 s, after the trigger at 9.5 s: the drawing is the letter (a model
+    of the issue's: looked for from the launch, it ended at the wait for
+    the trigger, with no ink)."""
+    turn = dict(k='move', t=1.5, turtle='turtle1', to=[2.0, 5.0, 1.0],
+                ink=[[2.0, 5.0, 2.0, 5.0] + PEN])
+    record = [jump(1.0, 5.5, 2.0), turn] + line(9.6, 2.0, 4.0)
+    assert not drew(record, 0.0, 9.5) and drew(record, 0.0)
+    since = looked_for_from(record, 0.0, 9.5)
+    d = drawing(record, [graph()], since=since, settle=5.0, until=20.0)
+    assert since == 9.5 and len(d.strokes) == 1 and d.commands == 0 and d.jumps == 0
+    assert round(d.strokes[0][-1][0], 6) == 4.0
+
+
+def test_a_turtle_that_drew_before_the_trigger_is_looked_at_from_the_launch():
+    record = line(1.0, 2.0, 3.0) + line(9.6, 3.0, 4.0)
+    assert looked_for_from(record, 0.5, 9.5) == 0.5
+
+
+def test_a_talker_that_publishes_p_before_the_key_is_typed_is_named():
+    """A "P" every second from the launch on: the key typed at 6 s is not
+    what made it (the grader's own P and the driver's do not count)."""
+    events = [graph(controller='/v_drawer')] + \
+        [dict(kind='chatter', t=float(t), data='P', sender='/talker') for t in range(1, 9)] + \
+        [dict(kind='chatter', t=2.5, data='P', sender='/v_drawer'),
+         dict(kind='chatter', t=3.5, data='P', sender='/grade_watch')]
+    assert unprompted(events, 0.5, 6.0) == ['/talker']
+    assert unprompted(events[:1] + events[7:], 0.5, 6.0) == []
+    assert trigger(events, 6.0) == 6.0

@@ -1,8 +1,9 @@
 """What a process prints, as the grader keeps it: its start and end, the
 middle counted, however much it prints."""
 import os
+import pty
 
-from turtle_letters.gradebook.processes import Capped
+from turtle_letters.gradebook.processes import Capped, Reader
 
 
 def test_the_start_and_end_are_kept_and_the_middle_counted():
@@ -31,3 +32,21 @@ def test_a_flood_through_a_pipe_stays_within_its_bounds():
     assert kept.size == 64 * 1024 * 1024
     assert len(kept.head) == Capped.HEAD and len(kept.tail) <= 2 * Capped.TAIL
     assert f'{kept.size - Capped.HEAD - Capped.TAIL} bytes left out' in kept.text()
+
+
+def test_a_reader_stopped_has_read_its_last_and_no_number_it_held_is_read_again():
+    """A pseudo-terminal whose other end a process keeps open: stopped, the
+    reader has ended and closed its own descriptor, so a pipe opened next
+    (which may get the same number) is read by its owner alone."""
+    master, slave = pty.openpty()
+    reader = Reader(master)
+    os.write(slave, b'roslaunch says hello\n')
+    reader.stop(seconds=0.5)
+    assert not reader.thread.is_alive()
+    assert 'roslaunch says hello' in reader.output.text()
+    read_end, write_end = os.pipe()
+    os.write(write_end, b'the next pipe')
+    assert os.read(read_end, 100) == b'the next pipe'
+    assert 'next pipe' not in reader.output.text()
+    for fd in (slave, read_end, write_end):
+        os.close(fd)

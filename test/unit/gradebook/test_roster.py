@@ -44,7 +44,7 @@ def test_a_missing_roster(tmp_path):
 
 def test_first_letters():
     assert [first_letter(n) for n in ('nadia', ' Øystein', '3 Zoë', '李', '')] == \
-        ['N', '', 'Z', '', '']
+        ['N', 'O', 'Z', '', '']
 
 
 def test_a_text_in_the_roster_or_the_initials_of_the_name(tmp_path):
@@ -53,3 +53,14 @@ def test_a_text_in_the_roster_or_the_initials_of_the_name(tmp_path):
     assert [s.expected for s in read(roster, subs)[0]] == ['A', 'JD']
     assert [s.expected for s in read(roster, subs, 'initials')[0]] == ['ALDV', 'JD']
     assert expected(' Émile  Zola ', mode='initials') == 'EZ'
+
+
+def test_letters_that_unicode_does_not_decompose_read_as_a_reader_sees_them(tmp_path):
+    assert [first_letter(n) for n in ('Øystein', 'Łukasz', 'Đorđe', 'Æsa', 'Þóra')] == \
+        ['O', 'L', 'D', 'A', 'T']
+    roster, subs = setup_class(tmp_path, 'id,name,letter\na,Øystein Berg,\nb,Łukasz Nowak,\n'
+                                         'c,Mei 李 Wang,\nd,Mei 李 Wang,MW\n', [])
+    students, warnings = read(roster, subs, 'initials')
+    assert [s.expected for s in students] == ['OB', 'LN', 'MW', 'MW']
+    assert warnings == ["c: in the name 'Mei 李 Wang', '李' has no letter of A-Z: expected 'MW'; "
+                        "give the letters in the roster's letter column"]

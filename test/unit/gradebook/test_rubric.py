@@ -186,3 +186,15 @@ def test_what_a_drawing_may_use_besides_cmd_vel_is_the_rubrics(tmp_path):
         0, 'teleported 2 times, called set_pen 3 times: the rubric does not allow it')
     with pytest.raises(RubricError, match='allowed: .* true or false for each of teleport'):
         load(DEFAULT, write(tmp_path, 'allowed: {teleport: 1}\n'))
+
+
+def test_a_dash_before_the_initials_costs_neither_the_letters_nor_their_accuracy():
+    """A level dash reads as no letter (it has no height): the letters and
+    their accuracy are both judged on the letters read, in the same places."""
+    dash = [[(0.2, 2.0), (0.6, 2.0)]]
+    a = [(1.0, 1.0), (1.6, 3.0), (2.2, 1.0)], [(1.2, 1.7), (2.0, 1.7)]
+    l_beside = [[(x + 2.0, y) for x, y in L_PATH]]
+    said = scores_of(grade(facts(Drawing([*dash, *a, *l_beside], 1.0, 5.0, 90, []),
+                                 expected='AL'), load(DEFAULT)))
+    assert said['The letter drawn is the expected one'] == (25, 'drew AL, as expected')
+    assert said['Its accuracy'][0] > 19, said['Its accuracy']
