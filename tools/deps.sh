@@ -5,8 +5,8 @@ source "$(dirname "$0")/env.sh"
 
 # On every platform: the compiler catkin's top-level CMake project needs, and
 # what the tests and the headless run use.
-COMMON="bubblewrap g++ git hershey-fonts-data iproute2 python3-pytest python3-pyqt5 python3-tqdm python3-yaml
-        python3-tornado tmux"
+COMMON="bubblewrap g++ git hershey-fonts-data iproute2 python3-numpy python3-pytest python3-pyqt5
+        python3-tqdm python3-yaml python3-tornado tmux"
 if [ -d /opt/ros/noetic ]; then
   # Ubuntu 20.04 with ROS Noetic: the real turtlesim. (Its chromium is a snap:
   # the viewer's browser test says it has no chromium-driver there, and skips.)

@@ -15,6 +15,8 @@ import math
 import string
 from typing import Dict, List, NamedTuple, Optional, Tuple
 
+import numpy
+
 from ..letters.font import FONT
 
 Point = Tuple[float, float]
@@ -24,6 +26,7 @@ GAP = 0.1           # clear space between two letters' ink, share of the height 
 READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
 SAMPLE = 0.02       # share of the height between compared points
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
+MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 
 _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
 _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
@@ -98,22 +101,37 @@ def samples(lines, step):
     return points
 
 
-def farthest(points, others, enough=math.inf):
-    """How far the point of `points` farthest from `others` lies from them;
-    stops early once that is past `enough` (the fit is already worse)."""
-    worst = 0.0
-    for p in points:
-        nearest = math.inf
-        for q in others:
-            d = (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2
-            if d < nearest:
-                nearest = d
-                if nearest <= worst:
-                    break
-        worst = max(worst, nearest)
-        if worst > enough:
-            break
-    return math.sqrt(worst)
+def thinned(ink, spacing):
+    """`ink` with points closer than `spacing` to the one kept before them
+    dropped (each line's ends kept), and at most MAX_POINTS in all: longer
+    ink (a flood of turtles) is thinned more coarsely. A dropped point lies
+    within the spacing of a kept one."""
+    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
+    spacing = max(spacing, length / MAX_POINTS)
+    kept = []
+    for line in ink:
+        if not line:
+            continue
+        points = [line[0]]
+        for p in line[1:-1]:
+            if math.dist(p, points[-1]) >= spacing:
+                points.append(p)
+        kept.append(points + list(line[-1:]) if len(line) > 1 else points)
+    while sum(len(line) for line in kept) > MAX_POINTS:     # many short lines
+        kept = [line[::2] + line[-1:] if len(line) > 2 else line for line in kept]
+        kept = kept[::2] if all(len(line) <= 2 for line in kept) else kept
+    return kept
+
+
+def away(drawn, ideal):
+    """The worse of the two ways apart: how far the point of `drawn` farthest
+    from `ideal` lies from it, and the other way round (arrays of points)."""
+    # nearest found by the product (fast), their distances taken exactly
+    d2 = (drawn ** 2).sum(axis=1)[:, None] + (ideal ** 2).sum(axis=1)[None, :] \
+        - 2 * drawn @ ideal.T
+    to_ideal = numpy.hypot(*(drawn - ideal[d2.argmin(axis=1)]).T).max()
+    to_drawn = numpy.hypot(*(ideal - drawn[d2.argmin(axis=0)]).T).max()
+    return float(max(to_ideal, to_drawn))
 
 
 def _fits(ink, letters):
@@ -121,18 +139,17 @@ def _fits(ink, letters):
     points = [p for line in ink for p in line]
     path_box = box(points)
     height = path_box[3]
-    drawn = samples([line for line in ink if line], SAMPLE * height)
+    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
+    step = max(SAMPLE * height, length / MAX_POINTS)    # at most about 2 x MAX_POINTS
+    drawn = numpy.array(samples([line for line in ink if line], step))
     fits: Dict[str, Fit] = {}
     for letter, strokes in CANDIDATES:
         if letter not in letters:
             continue
         shape = placed(strokes, path_box)
-        bound = min(fits[letter].fit if letter in fits else math.inf, 2 * READABLE) * height
-        away = farthest(drawn, samples(shape, SAMPLE * height), bound)
-        if away <= bound:
-            away = max(away, farthest(samples(shape, SAMPLE * height), drawn, bound))
-        if away / height < (fits[letter].fit if letter in fits else math.inf):
-            fits[letter] = Fit(letter, away / height, shape)
+        fit = away(drawn, numpy.array(samples(shape, SAMPLE * height))) / height
+        if fit < (fits[letter].fit if letter in fits else math.inf):
+            fits[letter] = Fit(letter, fit, shape)
     return fits
 
 
@@ -151,6 +168,7 @@ def read(ink, letters=string.ascii_uppercase) -> Reading:
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
+    ink = thinned(ink, SAMPLE * box(points)[3] / 2)
     fits = _fits(ink, letters)
     if min(f.fit for f in fits.values()) > LEVEL:
         x, y, w, h = box(points)

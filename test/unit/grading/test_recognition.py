@@ -7,7 +7,8 @@ import string
 
 import pytest
 
-from turtle_letters.grading.recognition import READABLE, apart, read, read_row, turned
+from turtle_letters.grading.recognition import (MAX_POINTS, READABLE, apart, read, read_row,
+                                                thinned, turned)
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import placed, retraced, rounded
@@ -106,3 +107,30 @@ def test_a_letter_drawn_up_to_15_degrees_off_level_still_reads(tilt):
         reading = read(ink)
         assert reading.letter == letter and reading.best.fit < 0.05, (letter, reading.best)
         assert abs(reading.best.tilt - tilt) <= 5    # the nearest of TILTS, or one beside it
+
+
+def flood(turtles=30, steps=10000):
+    """Thirty turtles' circles at turtlesim's 16 ms steps: 300,000 points."""
+    return [[(5.5 + (1 + k / 10) * math.cos(i * 0.016 * (1 + k % 3)),
+              5.5 + (1 + k / 10) * math.sin(i * 0.016 * (1 + k % 3))) for i in range(steps)]
+            for k in range(turtles)]
+
+
+def test_whatever_the_ink_a_reading_compares_a_bounded_number_of_points():
+    """The cost of a reading is its points times the candidates and tilts:
+    the ink read is thinned to MAX_POINTS (a flood took 40 minutes)."""
+    ink = flood()
+    assert sum(map(len, thinned(ink, 0.01))) <= MAX_POINTS
+    assert read_row(ink, 2)[0].letter is None
+
+
+def test_thinning_a_dense_letter_keeps_its_reading_and_its_fit():
+    """An N with 5 cm of wobble at turtlesim's steps (12,000 points) reads
+    as the same N drawn with every tenth point, to within 1 % of its height."""
+    corners = [(1.0, 1.0), (1.0, 4.0), (3.5, 1.0), (3.5, 4.0)]
+    dense = [[(x0 + (x1 - x0) * i / 4000 + 0.05 * math.sin(i / 20),
+               y0 + (y1 - y0) * i / 4000 + 0.05 * math.sin(i / 20))
+              for (x0, y0), (x1, y1) in zip(corners, corners[1:]) for i in range(4000)]]
+    sparse = [dense[0][::10]]
+    a, b = read(dense), read(sparse)
+    assert a.letter == b.letter == 'N' and abs(a.best.fit - b.best.fit) < 0.01
