@@ -185,9 +185,9 @@ def _user_usage(user):
 def world_cost():
     """One student's world: seconds to start it, then its idle CPU and memory."""
     from turtle_letters.gradebook.sandbox import Sandbox
-    from turtle_letters.gradebook.world import World
+    from turtle_letters.gradebook.world import GradingWorld
     with Sandbox() as box:
-        world = World(box)
+        world = GradingWorld(box)
         try:
             started = time.monotonic()
             world.start()

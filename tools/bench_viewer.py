@@ -27,7 +27,7 @@ import tornado.websocket
 from geometry_msgs.msg import Twist
 from std_srvs.srv import Empty
 from turtlesim.msg import Pose
-from turtlesim.srv import Spawn
+from turtlesim.srv import SetPen, Spawn
 
 from support.browser import browser
 from turtle_letters.grading.procstat import cpu_seconds, rss_mb
@@ -58,6 +58,21 @@ def _spawn_turtles(count):
     spawn = rospy.ServiceProxy('/spawn', Spawn)
     for i in range(2, count + 1):
         spawn(1.0 + (i % 6) * 1.8, 1.0 + (i // 6) * 1.8, 0.0, f'turtle{i}')
+
+
+def _park(name='parked'):
+    """A turtle that travels 1 m with its pen up, then stands on the
+    background for the rest of the soak (the pose path read one reading a
+    tick of it, for good, until issue 44)."""
+    rospy.ServiceProxy('/spawn', Spawn)(9.5, 0.5, math.pi / 2, name)
+    rospy.ServiceProxy(f'/{name}/set_pen', SetPen)(255, 255, 255, 3, 1)
+    publisher = rospy.Publisher(f'/{name}/cmd_vel', Twist, queue_size=1)
+    twist = Twist()
+    twist.linear.x = 1.0
+    for _ in range(10):         # 1 s at 1 m/s, a command every 0.1 s
+        publisher.publish(twist)
+        time.sleep(0.1)
+    publisher.publish(Twist())
 
 
 def _drive(count, stop):
@@ -192,12 +207,13 @@ SOAK_VIEWERS = {'ink': [], 'poses': ['_ink:=false']}   # from the simulator's in
 
 def soak_run(processes, turtles, seconds, pages=PAGES):
     """The memory of two viewers side by side while `turtles` turtles draw
-    for `seconds`: one drawing the simulator's ink, one rebuilding from
+    and one stands parked for `seconds`: one drawing the simulator's ink, one rebuilding from
     poses and color sensors as it does with the real turtlesim; each with
     `pages` pages of the bench's own reading every update. Their resident
     size each SOAK_SAMPLE s, and their CPU over the whole."""
     rospy.ServiceProxy('/reset', Empty)()
     _spawn_turtles(turtles)
+    _park()
     viewers, stop = {}, threading.Event()
     for name, extra in SOAK_VIEWERS.items():
         port = _free_port()
@@ -241,7 +257,7 @@ def soak_lines(results):
         sizes = [mb for _, mb in samples]
         tenth = max(1, len(sizes) // 10)
         lines.append(
-            f"viewer {SOAK_WORDS[name]}, {soak['turtles']} turtles drawing for "
+            f"viewer {SOAK_WORDS[name]}, {soak['turtles']} turtles drawing and one parked for "
             f"{soak['seconds'] / 60:g} min, {soak['pages']} pages: resident {sizes[0]:.0f} MB "
             f"at the start, {max(sizes[:tenth]):.0f} MB at most in the first tenth, "
             f"{max(sizes):.0f} MB at most, {sizes[-1]:.0f} MB at the end; "

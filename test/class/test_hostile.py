@@ -34,6 +34,9 @@ CONCLUSIONS = {
     'h10_killer': ('I', 'fail', "the grader's simulator was shut down: external shutdown request "
                                 "from [/killer]: [HOSTILE]: nothing drawn is credited"),
     'h11_name_taker': ('', 'fail', 'its launch file does not start turtlesim'),
+    'h12_hoarder': ('', 'fail', "memory limit of 0.5 GiB reached by the grader's watcher (a "
+                                "message on /chatter that large); more than 64 turtles at once: "
+                                "the grader's simulator refused the spawns past them"),
 }
 LINGERING = ('sleep 987653', 'sleep 987654', 'sleep 987655')
 PLANTED = ('json', 'rosgraph')      # modules every process of the grader's imports

@@ -277,6 +277,8 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
         for i, future in enumerate(futures):
             rows[i] = _finished(out, _graded(future, students[i], rubric), progress,
                                 args.isolated)
+            # each row kept as it comes: a grader killed outright keeps what it graded
+            reports.write_csv(os.path.join(out, 'grades.csv'), [rows[j] for j in sorted(rows)])
             _Painting.release()     # a stop that came while it painted: its row is kept
     except KeyboardInterrupt as e:
         stopped = str(e) or 'SIGINT'

@@ -13,6 +13,7 @@ import math
 from typing import List, NamedTuple, Optional
 
 WATCHER = '/grade_watch'    # the grader's watcher's node name (watch.py)
+POSE_TYPE = 'turtlesim/Pose'    # what a turtle's pose is published as
 COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 MOVES = ('move', 'jump')    # record lines of a turtle changing place or heading
@@ -136,11 +137,32 @@ def drawing(record, events, since, settle, until=math.inf) -> Drawing:
                    and first['t'] <= e['t'] <= stop + 2 * COUNTED)
     wiped = [(e['t'] - first['t'], e['k']) for e in during if e['k'] in ('clear', 'reset')]
     return Drawing(strokes(driven), first['t'], ended, commands, impostors(events),
-                   len(jumps), sum(1 for e in jumps if e['ink']),
+                   sum(e.get('n', 1) for e in jumps), sum(1 for e in jumps if e['ink']),
                    [e for e in during if e['k'] in MOVES][-1]['t'],
                    wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
                    sum(1 for e in record[1:] if e['k'] == 'pen'),
                    sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')))
+
+
+def roles(state, types, ours):
+    """The graph event's roles, from the master's system state and topic
+    types: who publishes a turtle's pose (a turtlesim/Pose, on a topic
+    named .../pose) or a cmd_vel, who talks and listens on /chatter, and
+    who serves /spawn; the grader's own nodes (`ours`) left out."""
+    publishers, subscribers, services = state
+    types = dict(types)
+
+    def publishing(suffix, kind=None):
+        return sorted({n for topic, nodes in publishers if topic.endswith(suffix)
+                       and (kind is None or types.get(topic) == kind)
+                       for n in nodes if n not in ours})
+    return dict(pose_publishers=publishing('/pose', POSE_TYPE),
+                cmd_vel_publishers=publishing('/cmd_vel'),
+                chatter_publishers=[n for n in dict(publishers).get('/chatter', [])
+                                    if n not in ours],
+                chatter_subscribers=[n for n in dict(subscribers).get('/chatter', [])
+                                     if n not in ours],
+                simulator=[n for n in dict(services).get('/spawn', []) if n not in ours])
 
 
 def last_graph(events):

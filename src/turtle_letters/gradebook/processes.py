@@ -1,6 +1,7 @@
 """The processes a run started, seen from outside its sandbox: what they
 print, kept within bounds, and through /proc the controller's CPU while it
 drew."""
+import json
 import os
 import select
 import threading
@@ -131,3 +132,26 @@ class Reader:
         self.thread.join(timeout=seconds)
         self.stopping.set()
         self.thread.join()
+
+
+class JsonLines:
+    """What a process tells in JSON lines, as they come: those `wanted`
+    kept in `items`, at most `cap` of them (past it `full`, and the rest
+    read and dropped, so that the teller never blocks on a full pipe)."""
+
+    def __init__(self, cap, wanted=lambda item: True):
+        self.cap, self.wanted = cap, wanted
+        self.items, self.full = [], False
+
+    def read(self, lines):
+        """Reads `lines` (a file of bytes, or any lines) to their end."""
+        for line in lines:
+            if len(self.items) >= self.cap:
+                self.full = True
+                continue
+            try:
+                item = json.loads(line)
+            except ValueError:
+                continue
+            if self.wanted(item):
+                self.items.append(item)

@@ -5,7 +5,7 @@ simulator (world.py), P and Enter typed for its talker, and the drawing
 watched from the launch on, until every turtle stands still. What happened
 is a Run, for the rubric to score; nothing here decides points.
 """
-import json
+import math
 import os
 import pty
 import re
@@ -20,16 +20,24 @@ from xml.sax.saxutils import quoteattr
 
 from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
-from .processes import ControllerCpu, Reader
+from .processes import ControllerCpu, JsonLines, Reader
 from .reports import plain
 from .rubric import Limits
-from .sandbox import Sandbox
+from .sandbox import Cgroup, GiB, Sandbox
 from .submission import MAX_NODES, Package, copy, scripts
-from .world import World, stand_in, stand_in_started
+from .world import GradingWorld, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
 STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
 MAX_EVENTS = 100000         # events kept of a run (a lab's run has about 20,000)
+# What the watcher, run as root, may hold: rospy reads a message of any
+# length (up to 4 GiB) before it looks at it (it idles at about 40 MiB).
+WATCHER_LIMITS = {
+    'memory': (GiB // 2, lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's "
+                                   f"watcher (a message on /chatter that large)"),
+    'processes': (64, lambda n: f"process limit of {n} reached by the grader's watcher"),
+    'cpu': (math.inf, lambda n: ''),
+}
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
                  'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
@@ -158,6 +166,7 @@ class Watcher:
     which the submission cannot reach."""
 
     def __init__(self, box):
+        self.cgroup = Cgroup(f'{box.namespace}a', WATCHER_LIMITS) if box.isolated else None
         self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
         env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
                    ROS_HOME=self.home, PYTHONUNBUFFERED='1')
@@ -166,31 +175,33 @@ class Watcher:
         # Its working folder is its own: `-m` imports from there first, as
         # root, and the folder the grader was started in may hold a json.py.
         try:
+            joining = self.cgroup.joining() if self.cgroup is not None else []
             self.process = box.started(subprocess.Popen(
-                box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
+                joining + box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
                 cwd=self.home, start_new_session=True))
         except BaseException:
             self.errors.close()
             shutil.rmtree(self.home, ignore_errors=True)
+            if self.cgroup is not None:
+                self.cgroup.remove()
             raise
-        self.events, self.full = [], False
-        threading.Thread(target=self._read, daemon=True).start()
+        self.lines = JsonLines(MAX_EVENTS, lambda e: isinstance(e, dict) and 'kind' in e)
+        self.events = self.lines.items      # as they come
+        threading.Thread(target=self.lines.read, args=(self.process.stdout,), daemon=True).start()
 
-    def _read(self):
-        for line in self.process.stdout:
-            if len(self.events) >= MAX_EVENTS:
-                self.full = True
-                continue
-            try:
-                self.events.append(json.loads(line))
-            except ValueError:
-                continue
+    @property
+    def full(self):
+        return self.lines.full
 
     def overflowed(self):
-        """Why the grader stopped watching, or '' (a run's events are capped)."""
-        return (f'more than {MAX_EVENTS} messages for the grader to watch (poses, /chatter): '
-                f'it stopped watching' if self.full else '')
+        """Why the grader stopped watching, or '': a run's events are capped,
+        and what the watcher may hold (rospy takes a message of any length)."""
+        if self.lines.full:
+            return (f'more than {MAX_EVENTS} messages for the grader to watch (poses, '
+                    f'/chatter): it stopped watching')
+        return self.cgroup.reached() if self.cgroup is not None else ''
+
 
     def publish_p(self):
         """Publishes "P" on /chatter; False when the watcher is gone (a node
@@ -206,6 +217,8 @@ class Watcher:
         """Stops it; what it said on stderr, if anything (its own failure)."""
         self.process.kill()
         self.process.wait()
+        if self.cgroup is not None:
+            self.cgroup.remove()
         self.errors.seek(max(0, self.errors.seek(0, os.SEEK_END) - 4000))
         said = self.errors.read()
         self.errors.close()
@@ -266,7 +279,7 @@ def _launch_and_watch(box, limits, result):
         path, names = generated_launch(box, result.package)
         launch = [path]
         result.generated = ', '.join(names) or 'none'
-    world = World(box)
+    world = GradingWorld(box)
     try:
         world.start()
         # Sourced first: the stand-in's workspace goes before the package's own.
@@ -288,7 +301,8 @@ def _launch_and_watch(box, limits, result):
                lambda: watching(terminal.process, box, watcher, world))
     finally:
         result.finished = time.monotonic()
-        result.limit = box.reached() or watcher.overflowed() or world.overflowed()
+        result.limit = '; '.join(filter(None, [box.reached(), watcher.overflowed(),
+                                               world.overflowed()]))
         result.broken = world.broken()
         terminal.stop()
         world.stop()

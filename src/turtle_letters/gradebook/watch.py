@@ -18,6 +18,7 @@ import rosgraph
 import rospy
 from std_msgs.msg import String
 
+from . import observations as seen
 from .observations import COUNTED, WATCHER
 from .world import SIMULATOR
 
@@ -46,16 +47,7 @@ def sender(msg):
 def graph(master):
     """Who drives a turtle, who talks and listens on /chatter, and which
     nodes besides the grader's simulator publish poses or serve /spawn."""
-    publishers, subscribers, services = master.getSystemState()
-    published, subscribed = dict(publishers), dict(subscribers)
-
-    def publishing(suffix):
-        return sorted({n for topic, nodes in publishers if topic.endswith(suffix)
-                       for n in nodes if n not in (NAME, SIMULATOR)})
-    return dict(pose_publishers=publishing('/pose'), cmd_vel_publishers=publishing('/cmd_vel'),
-                chatter_publishers=[n for n in published.get('/chatter', []) if n != NAME],
-                chatter_subscribers=[n for n in subscribed.get('/chatter', []) if n != NAME],
-                simulator=[n for n in dict(services).get('/spawn', []) if n != SIMULATOR])
+    return seen.roles(master.getSystemState(), master.getTopicTypes(), (NAME, SIMULATOR))
 
 
 def wait_for_master(master):

@@ -10,15 +10,29 @@ A turtlesim_node the submission's launch file starts finds STAND_IN first:
 it stays up as long as the launch wants, draws nothing, and registers no
 node, so it never displaces the grader's simulator.
 """
-import json
+import math
 import os
 import signal
 import subprocess
 import threading
 import time
 
+from .processes import JsonLines
+from .sandbox import Cgroup, GiB
+
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
 MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
+MAX_TURTLES = 64                # turtles the grader's simulator holds at once (~max_turtles)
+# What the world may hold, whatever a submission gives it to hold (parameters
+# of any size on its master, turtles, messages): a cgroup of its own (a
+# world idles at about 90 MiB with a dozen threads).
+LIMITS = {
+    'memory': (GiB, lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's "
+                              f"master and simulator (what the submission gave them to hold)"),
+    'processes': (256, lambda n: f"process limit of {n} reached by the grader's master and "
+                                 f"simulator"),
+    'cpu': (math.inf, lambda n: ''),
+}
 UP_SECONDS = 30.0               # for the master and the simulator to come up
 _REPOSITORY = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.realpath(__file__)))))
@@ -30,6 +44,11 @@ trap 'kill $! 2>/dev/null; exit 0' INT TERM
 sleep 2147483647 &
 wait $!
 """
+
+
+def _read_to_end(fd, lines):
+    with os.fdopen(fd, 'rb') as stream:
+        lines.read(stream)
 
 
 class WorldError(RuntimeError):
@@ -78,15 +97,16 @@ def _parent(pid):
         return 0
 
 
-class World:
+class GradingWorld:
     """rosmaster and the simulator for one sandbox (`box`); `events` is the
     simulator's record as it comes, one dict a line ('k', 't', ...)."""
 
     def __init__(self, box):
         self.box, self.user = box, box.world_user     # never a submission's
         self.home = os.path.join(box.scratch, 'world')
-        self.events, self.full = [], False
-        self.master = self.simulator = self.reader = None
+        self.record = JsonLines(MAX_RECORD, lambda e: isinstance(e, dict) and 'k' in e and 't' in e)
+        self.events = self.record.items     # the record as it comes
+        self.master = self.simulator = self.reader = self.cgroup = None
 
     def _env(self):
         env = {name: value for name, value in os.environ.items()
@@ -106,6 +126,8 @@ class World:
                              f"package's checkout (make build), not from an install space")
         os.mkdir(self.home, 0o700)
         os.chown(self.home, self.user, self.user)
+        if self.box.isolated:
+            self.cgroup = Cgroup(f'{self.box.namespace}w', LIMITS)
         log = open(os.path.join(self.home, 'world.log'), 'wb')
         port = self.box.master_uri.rsplit(':', 1)[1]
         # rosmaster itself, not roscore: roscore's roslaunch would leave its
@@ -115,10 +137,11 @@ class World:
         env = dict(self._env(), TURTLESIM_RECORD_FD=str(write_end))
         self.simulator = self._started(
             ['/usr/bin/python3', os.path.join(SIM_FOLDER, 'scripts', 'turtlesim_node'),
-             f'__name:={SIMULATOR[1:]}'], log, env, (write_end,))
+             f'__name:={SIMULATOR[1:]}', f'_max_turtles:={MAX_TURTLES}'], log, env, (write_end,))
         os.close(write_end)
         log.close()
-        self.reader = threading.Thread(target=self._read, args=(read_end,), daemon=True)
+        self.reader = threading.Thread(target=_read_to_end, args=(read_end, self.record),
+                                       daemon=True)
         self.reader.start()
         deadline = time.monotonic() + UP_SECONDS
         while not any(e['k'] == 'spawn' for e in self.events[:5]):
@@ -129,23 +152,16 @@ class World:
             time.sleep(0.05)
 
     def _started(self, argv, log, env=None, fds=()):
+        joining = self.cgroup.joining() if self.cgroup is not None else []
         return self.box.started(subprocess.Popen(
-            self.box.beside(argv, self.user, [SIM_FOLDER], [self.home]), env=env or self._env(),
+            joining + self.box.beside(argv, self.user, [SIM_FOLDER], [self.home]),
+            env=env or self._env(),
             cwd=self.home, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
             pass_fds=fds, start_new_session=True))
 
-    def _read(self, fd):
-        with os.fdopen(fd, 'rb') as lines:
-            for line in lines:
-                if len(self.events) >= MAX_RECORD:
-                    self.full = True
-                    continue
-                try:
-                    event = json.loads(line)
-                except ValueError:
-                    continue
-                if isinstance(event, dict) and 'k' in event and 't' in event:
-                    self.events.append(event)
+    @property
+    def full(self):
+        return self.record.full
 
     def broken(self):
         """Why the world is no longer whole (in words), or ''."""
@@ -159,8 +175,13 @@ class World:
         return ''
 
     def overflowed(self):
-        return (f"more than {MAX_RECORD} changes in the grader's simulator: it stopped "
-                f"recording" if self.full else '')
+        """The limit of the world's that the submission reached, in words, or ''."""
+        if self.record.full:
+            return f"more than {MAX_RECORD} changes in the grader's simulator: it stopped recording"
+        if any(e['k'] == 'refused' and 'max_turtles' in e.get('why', '') for e in self.events):
+            return (f"more than {MAX_TURTLES} turtles at once: the grader's simulator refused "
+                    f"the spawns past them")
+        return self.cgroup.reached() if self.cgroup is not None else ''
 
     def log_tail(self, size=2000):
         try:
@@ -190,3 +211,5 @@ class World:
                 process.wait()
         if self.reader is not None:
             self.reader.join(timeout=5)
+        if self.cgroup is not None:
+            self.cgroup.remove()

@@ -9,6 +9,9 @@ CANVAS_PIXELS = 500         # turtlesim's canvas is this many pixels square
 PIXELS_PER_METRE = 45.0
 WORLD_SIZE = (CANVAS_PIXELS - 1) / PIXELS_PER_METRE    # its usable size, meters
 SIM_TICK = 0.016            # s: turtlesim moves each turtle one step a tick
+DEFAULT_BACKGROUND = (69, 86, 255)      # its canvas, unless ~background_r/g/b say otherwise
+DEFAULT_PEN = (179, 184, 255)           # each turtle's pen, until set_pen
+DEFAULT_PEN_WIDTH = 3                   # px
 MARGIN = 0.5                # no stroke comes closer than this to a wall
 
 

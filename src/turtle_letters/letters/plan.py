@@ -13,10 +13,11 @@ from typing import List, NamedTuple, Optional
 from . import svgart
 from .font import shown
 from .geometry import PlannedPose
+from .layout import DEFAULT_PEN as TURTLESIM_PEN, DEFAULT_PEN_WIDTH
 from .primitives import Pen, Turn, Written, plan_strokes
 from .route import ink_length, order_strokes, travel_length
 
-DEFAULT_PEN = (179, 184, 255, 3)    # turtlesim's own: r, g, b, width in pixels
+DEFAULT_PEN = (*TURTLESIM_PEN, DEFAULT_PEN_WIDTH)    # turtlesim's own: r, g, b, width in pixels
 
 
 class Plan(NamedTuple):

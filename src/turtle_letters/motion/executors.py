@@ -28,7 +28,7 @@ from typing import Callable, NamedTuple, Optional
 from ..letters.geometry import wrap
 from ..letters.layout import SIM_TICK
 from ..letters.primitives import Turn
-from .latency import Ahead
+from .latency import Ahead, shows
 
 SETTLED = 1e-5              # m or rad: a timed primitive is done this close to its amount
 SETTLE_TICKS = 4            # a timed primitive's way back is spread over this many ticks
@@ -295,8 +295,7 @@ class StallWatch:
 
     def stalled(self, pose, now: float) -> bool:
         """Whether, at `now` (s), the turtle has disobeyed for `limit` s."""
-        obeyed = any(abs(pose.linear_velocity - math.hypot(c[0], c[1])) < 1e-3
-                     and abs(pose.angular_velocity - c[2]) < 1e-3 for c in self.recent)
+        obeyed = any(shows(pose, c) for c in self.recent)
         if obeyed or not any(any(c) for c in self.recent):     # obeying, or told to stand
             self.since = None
             return False

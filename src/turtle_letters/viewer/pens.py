@@ -27,12 +27,12 @@ import collections
 import math
 from typing import Dict, List, NamedTuple, Optional, Tuple
 
-from ..letters.layout import CANVAS_PIXELS, PIXELS_PER_METRE, SIM_TICK
+from ..letters.layout import CANVAS_PIXELS, DEFAULT_PEN_WIDTH as DEFAULT_WIDTH, PIXELS_PER_METRE, \
+    SIM_TICK
 
 HOLD_TICKS = 312            # 5 s: the longest a step waits to be judged
 DOUBTS = 200                # stretches judged not drawn, kept to be proven drawn
 WIDTHS = range(1, 13)       # px told apart: 1 (which no reading is sure to see) to 12
-DEFAULT_WIDTH = 3           # px: turtlesim's default pen
 JUMP = 0.01                 # m a pose may be off its commanded step before it is a teleport
 
 Colour = Tuple[int, int, int]
@@ -194,8 +194,10 @@ class PenReader:
         new = colour != pixels.at(q) and not pixels.near(q, colour)
         drawn = doubts.claim(q, colour) if new else []
         new = new and not drawn
-        if self.under is not None and pixels.at(q) == background:
-            self.seen.append(Seen(self.under, q, colour))
+        reading = Seen(self.under, q, colour)
+        if self.under is not None and pixels.at(q) == background and \
+                self.seen[-1:] != [reading]:    # a spot read again says nothing new
+            self.seen.append(reading)
         if self.jump is not None and self.rest >= 2:
             if new:
                 drawn.append(self.jump + (colour, self.pen.width))

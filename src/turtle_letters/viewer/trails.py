@@ -9,10 +9,8 @@ import math
 import threading
 from typing import Dict, List, NamedTuple, Tuple
 
-from .pens import DEFAULT_WIDTH as PEN_WIDTH, Doubts, PenReader, Pixels, to_pixels
-
-DEFAULT_BACKGROUND = (69, 86, 255)
-DEFAULT_PEN = (179, 184, 255)
+from ..letters.layout import DEFAULT_BACKGROUND, DEFAULT_PEN, DEFAULT_PEN_WIDTH as PEN_WIDTH
+from .pens import Doubts, PenReader, Pixels, to_pixels
 
 
 class Stroke(NamedTuple):

@@ -75,3 +75,19 @@ def test_a_ctrl_c_while_a_picture_is_painted_keeps_its_row_once(tmp_path, monkey
                                   args)
     assert stopped == 'SIGINT' and painted.count('a1') == 1 and rows[0].id == 'a1'
     assert capsys.readouterr().out.count('a1 Ann:') == 1
+
+
+def test_each_row_is_written_as_it_is_graded(tmp_path, monkeypatch):
+    """grades.csv holds every row finished so far, rewritten after each: a
+    grader killed outright (the machine out of memory) keeps what it graded."""
+    written = []
+    real = cli.reports.write_csv
+    monkeypatch.setattr(cli.reports, 'write_csv',
+                        lambda path, rows: (written.append([r.id for r in rows]),
+                                            real(path, rows)))
+    args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
+                          '--no-sandbox'])
+    students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
+    cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [], args)
+    assert written == [['a1'], ['a1', 'b2']]
+    assert (tmp_path / 'out' / 'grades.csv').read_text().count('\n') == 3

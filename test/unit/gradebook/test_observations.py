@@ -4,7 +4,7 @@ import pytest
 
 from turtle_letters.gradebook.observations import (chatter_peak, drawing, drew, looked_for_from,
                                                    moved, own_triggers, stood_for, strokes,
-                                                   trigger, unprompted)
+                                                   roles, trigger, unprompted)
 
 TICK = 0.016
 PEN = [179, 184, 255, 3]
@@ -170,3 +170,18 @@ def test_a_talker_that_publishes_p_before_the_key_is_typed_is_named():
     assert unprompted(events, 0.5, 6.0) == ['/talker']
     assert unprompted(events[:1] + events[7:], 0.5, 6.0) == []
     assert trigger(events, 6.0) == 6.0
+
+
+def test_only_a_turtlesim_pose_published_by_a_cadets_node_poses_as_turtlesim():
+    """A node's own /letter/pose (a Pose2D) is its business; a turtlesim/Pose
+    on a turtle's pose topic from a node not the simulator is an impostor's."""
+    state = ([['/letter/pose', ['/planner']], ['/turtle1/pose', ['/grading_turtlesim', '/fake']],
+              ['/turtle1/cmd_vel', ['/drawer']], ['/chatter', ['/talker', '/grade_watch']]],
+             [['/chatter', ['/drawer', '/grade_watch']]],
+             [['/spawn', ['/grading_turtlesim']]])
+    types = [['/letter/pose', 'geometry_msgs/Pose2D'], ['/turtle1/pose', 'turtlesim/Pose'],
+             ['/turtle1/cmd_vel', 'geometry_msgs/Twist'], ['/chatter', 'std_msgs/String']]
+    found = roles(state, types, ('/grade_watch', '/grading_turtlesim'))
+    assert found == dict(pose_publishers=['/fake'], cmd_vel_publishers=['/drawer'],
+                         chatter_publishers=['/talker'], chatter_subscribers=['/drawer'],
+                         simulator=[])

@@ -152,3 +152,18 @@ def test_a_clear_to_another_background_is_read_again():
     sim.drive(1.0, 1.0)
     found, extra = compare(sim, (10, 20, 30))
     assert found > 0.97 and extra > 0.97 and sim.trails.background == (10, 20, 30)
+
+
+def test_a_turtle_parked_on_the_background_keeps_no_reading_per_tick():
+    """After pen-up travel, a turtle standing on the background gave a
+    reading a tick, which nothing cleared: 37,000 after 10 minutes. One
+    reading of a spot says all the ticks on it can say."""
+    sim = Turtlesim()
+    sim.pen(WHITE, 3, off=1)
+    sim.drive(2.0, 1.0)                 # up, across nothing
+    sim.rest(10 * 60 * 62)              # parked for ten minutes of turtlesim's ticks
+    assert len(sim.trails.readers['turtle1'].seen) <= 2
+    sim.pen(WHITE, 3)
+    sim.drive(1.0, 1.0)
+    found, extra = compare(sim)
+    assert found > 0.97 and extra > 0.97

@@ -4,6 +4,9 @@ Private parameters (all optional):
     ~background_r, ~background_g, ~background_b (int 0-255, default 69, 86, 255):
         canvas colour; set to the defaults at start if absent, re-read by
         `clear` and `reset`, as the real turtlesim does.
+    ~max_turtles (int, default 0): at most this many turtles at once, read
+        once at start; a spawn past it is refused, and recorded. 0: no cap,
+        as the real turtlesim (the grader's world sets one).
     ~canvas_png (str, default ''): where the picture is saved, read once at
         start. If set, it is saved there when the node shuts down;
         `~save_canvas` saves there too (or to $ROS_HOME/turtlesim_canvas.png
@@ -155,7 +158,8 @@ class TurtleEndpoints:
 class TurtlesimNode:
     def __init__(self, canvas_factory):
         self._lock = threading.Lock()
-        self._world = World()
+        self._max_turtles = self._read_max_turtles()
+        self._world = World(self._max_turtles)
         self._endpoints = {}
         self._calls = queue.Queue()
         self.changed = True   # the picture differs from the last one shown
@@ -191,6 +195,16 @@ class TurtlesimNode:
         return self._canvas_png
 
     @staticmethod
+    def _read_max_turtles():
+        """Read once, at start, as ~canvas_png is."""
+        value = rospy.get_param('~max_turtles', 0)
+        if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+            rospy.logwarn('%s is %r; it must be an integer of 0 or more, using 0 (no cap)',
+                          rospy.resolve_name('~max_turtles'), value)
+            return 0
+        return value
+
+    @staticmethod
     def _read_canvas_png():
         """Read once, at start: the parameter server takes writes from any machine."""
         path = rospy.get_param('~canvas_png', '')
@@ -220,11 +234,12 @@ class TurtlesimNode:
             for name, turtle in self._world.turtles.items():
                 # turtlesim's order: a teleport's line, the move, the colour sensor
                 # (it senses the teleport's ink), the move's line
-                before = where(turtle)
+                before, teleports = where(turtle), len(turtle.pending_teleports)
                 teleported = turtle.teleport()
                 after_jump = where(turtle)
                 moved, clamped_from = turtle.move(now)
-                self.record.turtle_ticked(turtle, before, after_jump, teleported, moved)
+                self.record.turtle_ticked(turtle, before, after_jump, teleported, moved,
+                                          teleports)
                 if teleported:
                     self._canvas.draw(teleported)
                     self.changed = True
@@ -322,6 +337,7 @@ class TurtlesimNode:
             try:
                 return SpawnResponse(self._spawn(req.x, req.y, req.theta, req.name))
             except RequestError as e:
+                self.record('refused', call='spawn', why=str(e))
                 self._refuse('spawn', e)
         return self.at_next_tick(run)
 
@@ -356,7 +372,7 @@ class TurtlesimNode:
             for endpoints in self._endpoints.values():
                 endpoints.close()
             self._endpoints.clear()
-            self._world = World()
+            self._world = World(self._max_turtles)
             self._canvas.clear(background)
             self.record('reset', background=list(background))
             self._spawn(CENTRE, CENTRE, 0.0, '')

@@ -7,9 +7,10 @@ was drawn that no submission can forge. No ROS and no Qt here.
 Lines ('k' is the kind, 't' time.monotonic() when it happened):
     spawn  turtle x y theta        kill   turtle
     pen    turtle r g b width off  clear, reset (reset: every turtle gone, turtle1 anew)
-    jump   turtle to=[x, y, theta] ink=[segments]   a teleport (or several in a tick)
+    jump   turtle to=[x, y, theta] ink=[segments] n   n teleports in a tick
     move   turtle to=[x, y, theta] ink=[segments]   a tick's move, driven by cmd_vel
     cmd    turtle n                commands that came on cmd_vel since the last such line
+    refused call why               a request refused (a spawn past ~max_turtles, a bad name)
     end    why                     the simulator shuts down
 A segment is [x0, y0, x1, y1, r, g, b, width]: a line the pen left.
 
@@ -35,23 +36,15 @@ def where(turtle):
     return [round(turtle.x, 6), round(turtle.y, 6), round(turtle.theta, 6)]
 
 
-class Record:
-    """The account, written as it happens; a no-op when nobody asked for it."""
+class Account:
+    """The grader's evidence: each line written to TURTLESIM_RECORD_FD as it
+    happens, and nothing kept; a no-op when nobody asked for it."""
 
-    def __init__(self, environ=os.environ):
+    def __init__(self, environ):
         fd = environ.get(FD_VARIABLE, '')
         self.out = os.fdopen(int(fd), 'w', buffering=1) if fd.isdigit() else None
-        self.commands = {}      # turtle: commands since the last count
-        self.ticks = 0
-        self.showing = False    # whether the picture's lines are kept for `shown`
-        self.shown = []         # this tick's lines that change the picture
 
-    def __call__(self, kind, **fields):
-        if self.out is None and not self.showing:
-            return
-        line = dict(k=kind, t=time.monotonic(), **fields)
-        if self.showing and (fields.get('ink') or kind in PICTURE):
-            self.shown.append(line)
+    def write(self, line):
         if self.out is None:
             return
         try:
@@ -59,21 +52,66 @@ class Record:
         except (OSError, ValueError):   # the reader is gone: nobody to tell
             self.out = None
 
-    def take_shown(self):
-        """This tick's lines that change the picture, as JSON ('' for none)."""
+
+class InkFeed:
+    """The lines that change the picture (ink laid, clear, reset, spawn,
+    kill), kept for the tick's end while a page listens on ~ink."""
+
+    def __init__(self):
+        self.showing = False    # whether anyone listens
+        self.shown = []         # this tick's lines
+
+    def keep(self, line):
+        if self.showing and (line.get('ink') or line['k'] in PICTURE):
+            self.shown.append(line)
+
+    def take(self):
+        """This tick's lines, as JSON ('' for none)."""
         shown, self.shown = self.shown, []
         return json.dumps(shown) if shown else ''
 
+
+class Record:
+    """What the simulator did, told as it happens to both who may listen:
+    the grader's account and the pages' ink feed (each its own job)."""
+
+    def __init__(self, environ=os.environ):
+        self.account, self.feed = Account(environ), InkFeed()
+        self.commands = {}      # turtle: commands since the last count (the account's)
+        self.ticks = 0
+
+    @property
+    def showing(self):
+        return self.feed.showing
+
+    @showing.setter
+    def showing(self, listened):
+        self.feed.showing = listened
+
+    def __call__(self, kind, **fields):
+        if self.account.out is None and not self.feed.showing:
+            return
+        line = dict(k=kind, t=time.monotonic(), **fields)
+        self.feed.keep(line)
+        self.account.write(line)
+
+    def take_shown(self):
+        """This tick's lines that change the picture, as JSON ('' for none)."""
+        return self.feed.take()
+
     def command(self, turtle):
-        if self.out is not None:
+        if self.account.out is not None:
             self.commands[turtle] = self.commands.get(turtle, 0) + 1
 
-    def turtle_ticked(self, turtle, before, after_jump, jumped, moved):
-        """A turtle's tick: its teleports' and its move's changes, if any."""
-        if self.out is None and not self.showing:
+    def turtle_ticked(self, turtle, before, after_jump, jumped, moved, teleports=0):
+        """A turtle's tick: its `teleports` (their ink `jumped`) and its
+        move's changes, if any. Teleports that come back where they began
+        are told too: their ink is on the canvas, and they were asked for."""
+        if self.account.out is None and not self.feed.showing:
             return
-        if after_jump != before:
-            self('jump', turtle=turtle.name, to=list(after_jump), ink=ink(jumped))
+        if after_jump != before or jumped or teleports:
+            self('jump', turtle=turtle.name, to=list(after_jump), ink=ink(jumped),
+                 n=max(teleports, 1))
         now = where(turtle)
         if now != after_jump:
             self('move', turtle=turtle.name, to=now, ink=ink(moved))

@@ -164,12 +164,16 @@ class Turtle:
 class World:
     """The set of turtles, with the real node's naming rules."""
 
-    def __init__(self) -> None:
+    def __init__(self, max_turtles: int = 0) -> None:
         self.turtles: Dict[str, Turtle] = {}
         self._name_counter = 0
+        self.max_turtles = max_turtles      # 0: as many as are spawned (the real node's way)
 
     def spawn(self, x: float, y: float, theta: float, name: str = '') -> Turtle:
         require_finite(x=x, y=y, theta=theta)
+        if self.max_turtles and len(self.turtles) >= self.max_turtles:
+            raise RequestError(f'this simulator holds at most {self.max_turtles} turtles '
+                               f'(its ~max_turtles)')
         if not name:
             name = self.free_name()
         elif not _NAME_PATTERN.match(name):

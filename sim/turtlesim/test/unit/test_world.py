@@ -180,3 +180,15 @@ def test_a_tick_is_its_teleports_then_its_move():
     (jump,) = t.teleport()
     (move,), hit = t.move(now=0.0)
     assert move.x0 == jump.x1 and move.x1 == t.x and hit is None    # the move starts there
+
+
+def test_a_cap_on_turtles_refuses_the_spawn_past_it_and_none_by_default():
+    capped = World(max_turtles=2)
+    capped.spawn(1, 1, 0)
+    capped.spawn(2, 2, 0)
+    with pytest.raises(RequestError, match=r'at most 2 turtles \(its ~max_turtles\)'):
+        capped.spawn(3, 3, 0)
+    capped.kill('turtle1')
+    assert capped.spawn(3, 3, 0).name == 'turtle3'
+    free = World()
+    assert len([free.spawn(i % 10, 1, 0) for i in range(100)]) == 100

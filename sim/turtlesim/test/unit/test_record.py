@@ -1,0 +1,35 @@
+"""The simulator's record, as a tick writes it: what the grader counts and
+the viewer draws. No ROS here."""
+import json
+import os
+
+from turtlesim_compat.record import FD_VARIABLE, Record, where
+from turtlesim_compat.world import World
+
+
+def tick(record, turtle, now):
+    """One tick of turtlesim_node's, for one turtle, in its order."""
+    before, teleports = where(turtle), len(turtle.pending_teleports)
+    teleported = turtle.teleport()
+    after_jump = where(turtle)
+    moved, _ = turtle.move(now)
+    record.turtle_ticked(turtle, before, after_jump, teleported, moved, teleports)
+
+
+def lines_of(read_end):
+    with os.fdopen(read_end) as f:
+        return [json.loads(line) for line in f]
+
+
+def test_teleports_that_come_back_where_they_began_are_told_with_their_ink():
+    read_end, write_end = os.pipe()
+    record = Record({FD_VARIABLE: str(write_end)})
+    turtle = World().spawn(5.0, 5.0, 0.0)
+    turtle.teleport_absolute(7.0, 5.0, 0.0)
+    turtle.teleport_absolute(5.0, 5.0, 0.0)        # back where it began, in the same tick
+    tick(record, turtle, 0.0)
+    tick(record, turtle, 0.016)                     # nothing asked: nothing told
+    record.account.out.close()
+    jumps = [line for line in lines_of(read_end) if line['k'] == 'jump']
+    assert len(jumps) == 1 and jumps[0]['n'] == 2 and len(jumps[0]['ink']) == 2
+    assert jumps[0]['to'] == [5.0, 5.0, 0.0]
