@@ -36,7 +36,7 @@ CONCLUSIONS = {
     'c09_fatima': ('F', '', 'fail', 'nothing was drawn'),
     'c10_sam': ('S', '', 'fail', f'no package.xml in {SUBMISSIONS}/c10_sam'),
     'c11_zoe': ('Z', '', 'fail', 'no submission'),
-    'c12_ursula': ('U', 'U', 'fail', 'turtlesim was cleared'),
+    'c12_ursula': ('U', 'I', 'fail', 'turtlesim was cleared'),     # the canvas left: one stroke
     'c13_victor': ('V', 'V', 'pass', 'drives the turtle and published "P"'),
     'c14_lars': ('L', 'L', 'pass', 'every criterion met'),     # a pause of 3 s between strokes
     'c15_carmen': ('C', 'C', 'pass', 'a turtle moved without the trigger'),    # draws at launch

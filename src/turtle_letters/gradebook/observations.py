@@ -129,15 +129,18 @@ def drawing(record, events, since, settle, until=math.inf) -> Drawing:
     ended = _end(record, first, settle, until)
     stop = ended if ended is not None else until
     during = [e for e in record if first['t'] <= e['t'] <= stop]
-    driven = [(e['turtle'], s) for e in during if e['k'] in MOVES
+    wipes = [e for e in during if e['k'] in ('clear', 'reset')]
+    kept = [e for e in during if not wipes or e['t'] > wipes[-1]['t']]   # on the canvas left
+    driven = [(e['turtle'], s) for e in kept if e['k'] in MOVES
               for s in (e['ink'] if e['k'] == 'move' else [None])]
     jumps = [e for e in during if e['k'] == 'jump']
     turtles = list(dict.fromkeys(e['turtle'] for e in during if e['k'] in MOVES))
     commands = sum(e['n'] for e in record if e['k'] == 'cmd'
                    and first['t'] <= e['t'] <= stop + 2 * COUNTED)
-    wiped = [(e['t'] - first['t'], e['k']) for e in during if e['k'] in ('clear', 'reset')]
+    wiped = [(e['t'] - first['t'], e['k']) for e in wipes]
     return Drawing(strokes(driven), first['t'], ended, commands, impostors(events),
-                   sum(e.get('n', 1) for e in jumps), sum(1 for e in jumps if e['ink']),
+                   sum(e.get('n', 1) for e in jumps),
+                   sum(1 for e in kept if e['k'] == 'jump' and e['ink']),
                    [e for e in during if e['k'] in MOVES][-1]['t'],
                    wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
                    sum(1 for e in record[1:] if e['k'] == 'pen'),

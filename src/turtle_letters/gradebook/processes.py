@@ -42,23 +42,29 @@ class ControllerCpu:
     def __init__(self, root, events):
         graph = seen.last_graph(events)
         names = graph['cmd_vel_publishers'] if graph else []
+        self.started = time.monotonic()
         self.pids = controller_processes(root, names[0]) if len(names) == 1 else []
-        self.started, self.used = time.monotonic(), self._used()
+        self.used = self._used()
 
     def _used(self):
-        total = 0.0
+        """Each process's CPU seconds; None where it has ended (its time is gone with it)."""
+        used = {}
         for pid in self.pids:
             try:
-                total += cpu_seconds(pid)
+                used[pid] = cpu_seconds(pid)
             except OSError:
-                pass
-        return total
+                used[pid] = None
+        return used
 
     def share(self):
-        """% of a core since the trigger, or None when no one node publishes cmd_vel."""
-        if not self.pids:
+        """% of a core since the trigger; None when no one node publishes
+        cmd_vel, or its process ended before this was asked (what it used
+        ended with it: counting it as nothing made the figure negative)."""
+        now = self._used()
+        if not self.pids or None in now.values() or None in self.used.values():
             return None
-        return 100 * (self._used() - self.used) / max(time.monotonic() - self.started, 1e-6)
+        spent = sum(now[pid] - self.used[pid] for pid in self.pids)
+        return 100 * max(0.0, spent) / max(time.monotonic() - self.started, 1e-6)
 
 
 class Capped:

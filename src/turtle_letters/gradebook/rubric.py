@@ -144,14 +144,17 @@ def _talker(facts, _):
     return share, line
 
 
-def _wiped(facts, what):
-    """The line for turtlesim's canvas cleared or reset while the turtle drew, or ''."""
+def _wiped(facts):
+    """Words for turtlesim's canvas cleared or reset while the turtle drew
+    ('' if it was not): a student may start again, and what is graded is
+    the canvas as it was left, the ink laid after the last of them."""
     d = facts.drawing
-    when = [seconds for seconds, done in (d.wiped if d else []) if done == what]
-    if not when:
+    if not d or not d.wiped:
         return ''
-    return (f'turtlesim was {"cleared" if what == "clear" else "reset"} {when[0]:.1f} s into '
-            f'the drawing' + (f' ({len(when)} times)' if len(when) > 1 else ''))
+    seconds, what = d.wiped[-1]
+    return (f' (graded on the canvas left after turtlesim was '
+            f'{"cleared" if what == "clear" else "reset"} {seconds:.1f} s into the drawing' +
+            (f', the last of {len(d.wiped)} times' if len(d.wiped) > 1 else '') + ')')
 
 
 def _shapes(readings):
@@ -170,12 +173,14 @@ def _right(facts):
     return [(r, e) for r, e in zip(_shapes(facts.readings), facts.expected) if r.letter == e]
 
 
-def _letter(facts, _):
+def _letter(facts, rubric):
+    share, line = _letter_read(facts, rubric)
+    return share, line + _wiped(facts)
+
+
+def _letter_read(facts, _):
     if facts.broken:
         return 0.0, f'{facts.broken}: nothing drawn is credited'
-    cleared = _wiped(facts, 'clear')
-    if cleared:
-        return 0.0, f'{cleared}: the letter on its canvas is not whole'
     read = _shapes(facts.readings)
     if not read:
         teleported = facts.drawing.jump_ink if facts.drawing else 0
@@ -241,9 +246,6 @@ def _driven(facts, rubric):
     if d.impostors:
         return 0.0, (f'{", ".join(d.impostors)} posed as turtlesim (published poses or served '
                      f'/spawn): nothing it says is evidence, and it is not credited')
-    reset = _wiped(facts, 'reset')
-    if reset:
-        return 0.0, f'{reset}: the turtle was put back, not driven'
     if _not_allowed(d, rubric.allowed):
         return 0.0, _not_allowed(d, rubric.allowed)
     if d.jump_ink:

@@ -114,6 +114,17 @@ def test_turtlesim_cleared_or_reset_while_the_turtle_drew():
     assert [(round(s, 2), what) for s, what in d.wiped] == [(round(29 * TICK, 2), 'clear')]
 
 
+def test_after_a_reset_between_two_passes_the_canvas_left_is_the_drawing():
+    """Two passes of a letter with /reset between them (a real class's CC):
+    what counts is the ink on the canvas as it was left, all of it driven."""
+    first = line(1, 2.0, 4.0) + [jump(3.2, 4.0, 2.0, ink=True)]
+    second = line(3.5, 5.0, 7.0)
+    record = first + [dict(k='reset', t=3.3)] + second
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=12.0)
+    assert len(d.strokes) == 1 and d.strokes[0][0] == (5.0, 5.0)
+    assert d.jump_ink == 0 and d.jumps == 1 and d.wiped == [(3.3 - (1 + TICK), 'reset')]
+
+
 def test_the_commands_counted_while_the_turtle_drew():
     record = line(1, 5.0, 6.0)
     counts = [dict(k='cmd', t=t, turtle='turtle1', n=10) for t in (0.5, 1.5, 1.9, 4.0)]

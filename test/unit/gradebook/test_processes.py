@@ -2,8 +2,11 @@
 middle counted, however much it prints."""
 import os
 import pty
+import subprocess
+import sys
+import time
 
-from turtle_letters.gradebook.processes import Capped, Reader
+from turtle_letters.gradebook.processes import Capped, ControllerCpu, Reader
 
 
 def test_the_start_and_end_are_kept_and_the_middle_counted():
@@ -50,3 +53,16 @@ def test_a_reader_stopped_has_read_its_last_and_no_number_it_held_is_read_again(
     assert 'next pipe' not in reader.output.text()
     for fd in (slave, read_end, write_end):
         os.close(fd)
+
+
+def test_a_controller_that_ended_has_no_cpu_figure_never_a_negative_one():
+    """Its CPU time ends with its process: a share measured then was -1.4 %."""
+    busy = subprocess.Popen([sys.executable, '-c', 'import time\nend = time.time() + 0.3\n'
+                             'while time.time() < end: pass'])
+    cpu = ControllerCpu(0, [])
+    cpu.pids, cpu.used = [busy.pid], {busy.pid: 0.0}
+    time.sleep(0.1)
+    assert cpu.share() > 0
+    cpu.used = cpu._used()
+    busy.wait()
+    assert cpu.share() is None

@@ -108,11 +108,12 @@ def test_cheats_on_the_trigger_and_the_canvas_cost_the_criterion_they_break():
     assert own[talker] == (0, '/v_drawer drives the turtle and published "P" on /chatter '
                               'itself: it draws without the trigger')
     assert flood[talker] == (0, 'fine, but /chatter was flooded: 9000 messages a second')
-    assert cleared[letter] == (0, 'turtlesim was cleared 2.5 s into the drawing: the letter on '
-                                  'its canvas is not whole')
-    assert reset[driven] == (0, 'turtlesim was reset 1.0 s into the drawing (2 times): the turtle '
-                                'was put back, not driven')
-    assert cleared[driven][0] == 10 and reset[letter][0] == 25
+    # a student may start again: the canvas left is graded, and the row says so
+    assert cleared[letter] == (25, 'drew L, as expected (graded on the canvas left after '
+                                   'turtlesim was cleared 2.5 s into the drawing)')
+    assert reset[letter] == (25, 'drew L, as expected (graded on the canvas left after '
+                                 'turtlesim was reset 3.0 s into the drawing, the last of 2 times)')
+    assert cleared[driven][0] == 10 and reset[driven][0] == 10
 
 
 def test_impostors_teleported_ink_and_a_broken_world_fail_the_driving():
