@@ -4,7 +4,8 @@ set -eu
 source "$(dirname "$0")/env.sh"
 
 # On every platform: the compiler catkin's top-level CMake project needs, and
-# what the tests and the headless run use.
+# what the tests and the headless run use. numpy, tf and tf2 are also what a
+# course's ROS Noetic desktop machine offers the student code the grader runs.
 COMMON="bubblewrap g++ git hershey-fonts-data iproute2 python3-numpy python3-pytest python3-pyqt5
         python3-tqdm python3-yaml python3-tornado tmux"
 if [ -d /opt/ros/noetic ]; then
@@ -12,7 +13,8 @@ if [ -d /opt/ros/noetic ]; then
   # the viewer's browser test says it has no chromium-driver there, and skips.)
   WANT="$COMMON ros-noetic-ros-base ros-noetic-turtlesim ros-noetic-rostest ros-noetic-std-srvs
         ros-noetic-geometry-msgs ros-noetic-message-generation ros-noetic-message-runtime
-        ros-noetic-actionlib ros-noetic-actionlib-msgs ros-noetic-sensor-msgs ros-noetic-image-view"
+        ros-noetic-actionlib ros-noetic-actionlib-msgs ros-noetic-sensor-msgs ros-noetic-image-view
+        ros-noetic-tf ros-noetic-tf2-ros"
 else
   # Debian (12) or Ubuntu without /opt/ros: Debian's ROS 1 packages; the
   # simulator comes bundled, since Debian has no turtlesim.
@@ -20,7 +22,8 @@ else
         python3-rosservice rosout python3-std-msgs python3-std-srvs python3-geometry-msgs
         ros-std-srvs libstd-srvs-dev rosbash rospack-tools python3-svgelements
         python3-actionlib ros-actionlib-msgs libactionlib-msgs-dev python3-actionlib-msgs
-        python3-sensor-msgs ros-image-view chromium chromium-driver python3-selenium"
+        python3-sensor-msgs ros-image-view chromium chromium-driver python3-selenium
+        python3-tf libtf-dev python3-tf2-ros libtf2-ros-dev"
 fi
 
 if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then

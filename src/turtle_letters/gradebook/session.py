@@ -25,7 +25,7 @@ from .reports import plain
 from .rubric import Limits
 from .sandbox import Cgroup, GiB, Sandbox
 from .submission import MAX_NODES, Package, copy, scripts
-from .world import GradingWorld, stand_in, stand_in_started
+from .world import GradingWorld, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
 STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
@@ -69,6 +69,7 @@ class Run:
 
 def _env(work, master_uri):
     env = {name: os.environ[name] for name in ROS_VARIABLES if name in os.environ}
+    env.update(course_environment(os.environ))
     env.update(HOME=os.path.join(work, 'home'), ROS_HOME=os.path.join(work, 'home', '.ros'),
                TMPDIR=os.path.join(work, 'tmp'),       # its own, with or without a sandbox
                PATH=f"{os.path.join(work, 'bin')}:/usr/bin:/bin:{os.environ.get('PATH', '')}",
@@ -201,7 +202,6 @@ class Watcher:
             return (f'more than {MAX_EVENTS} messages for the grader to watch (poses, '
                     f'/chatter): it stopped watching')
         return self.cgroup.reached() if self.cgroup is not None else ''
-
 
     def publish_p(self):
         """Publishes "P" on /chatter; False when the watcher is gone (a node
