@@ -29,6 +29,7 @@ import traceback
 import rospkg
 
 from ..grading.files import shown
+from ..grading.ocr import read_text
 from ..grading.recognition import read_row
 from . import observations as seen
 from . import reports, rubric as rubrics, sandbox, session, submission
@@ -138,14 +139,15 @@ def facts_of(student, rubric, place):
         run = session.run(package, rubric.limits, box)
     if box.stopped:
         raise Stopped()
-    drawing, readings = None, []
+    drawing, readings, ocr = None, [], None
     if run.trigger is not None:
         drawing = seen.drawing(run.record, run.events, run.since, rubric.limits.settle,
                                run.finished)
-        readings = read_row(drawing.strokes, len(student.expected)) if drawing.strokes else []
+        readings = read_row(drawing.strokes, student.expected) if drawing.strokes else []
+        ocr = read_text(drawing.strokes, student.expected) if drawing.strokes else None
     facts = rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
                           drawing, readings, run.stuck, run.limit, seen.own_triggers(run.events),
-                          seen.chatter_peak(run.events), run.broken)
+                          seen.chatter_peak(run.events), run.broken, ocr)
     return facts, run, package.notes
 
 
@@ -182,7 +184,7 @@ def grade_student(student: Student, rubric, out, place, warning=''):
             place.current.remove(student.id)
     warning = '; '.join(filter(None, [warning] + notes))
     graded = rubrics.grade(facts, rubric)
-    drawn = rubrics.drawn(facts.readings)
+    drawn = rubrics.drawn_text(facts)
     board = leaderboard(facts, run)
     row = reports.Row(student.id, student.name, student.expected, drawn, graded,
                       time.monotonic() - started, board, None, warning)
@@ -211,8 +213,10 @@ def leaderboard(facts, run):
 
 
 def draw_picture(out, row, facts):
-    """OUT/ID/drawing.png: the ink over the letters read from it (Qt: main thread only)."""
-    fits = [r.best for r in facts.readings if r.best is not None]
+    """OUT/ID/drawing.png: the ink over the letters read from it, the
+    expected ones named (Qt: main thread only). Only a letter read is drawn
+    under the ink: a guess's ideal strokes shown as if expected mislead."""
+    fits = [r.best for r in facts.readings if r.letter is not None]
     if not fits:
         return row
     from ..grading.picture import draw
@@ -221,7 +225,8 @@ def draw_picture(out, row, facts):
     worst = max(fits, key=lambda fit: fit.fit)
     height = max(y for s in worst.strokes for _, y in s) - min(y for s in worst.strokes for _, y in s)
     half_box = round(min(0.5, max(0.02, 1.5 * worst.fit * height)), 2)
-    label = f'{row.id}: {rubrics.drawn(facts.readings)}, {100 * worst.fit:.1f}% off'
+    label = (f'{row.id}: read {rubrics.drawn(facts.readings)}, expected '
+             f'{facts.expected or "?"}, {100 * worst.fit:.1f}% off')
     draw(path, strokes, {label: facts.drawing.strokes}, {label: (178, 24, 43)}, half_box)
     return row._replace(picture=os.path.relpath(path, out))
 

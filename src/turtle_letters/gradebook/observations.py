@@ -12,12 +12,15 @@ a controller that publishes its own draws without one.
 import math
 from typing import List, NamedTuple, Optional
 
+from ..letters.layout import DEFAULT_BACKGROUND
+
 WATCHER = '/grade_watch'    # the grader's watcher's node name (watch.py)
 POSE_TYPE = 'turtlesim/Pose'    # what a turtle's pose is published as
 COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 MOVES = ('move', 'jump')    # record lines of a turtle changing place or heading
 INK = 1e-6          # m: a segment shorter than this is a pen turned in place, not ink
+BACKGROUND = DEFAULT_BACKGROUND     # the grader's simulator's, until a clear or reset says
 
 
 class Drawing(NamedTuple):
@@ -131,7 +134,10 @@ def drawing(record, events, since, settle, until=math.inf) -> Drawing:
     during = [e for e in record if first['t'] <= e['t'] <= stop]
     wipes = [e for e in during if e['k'] in ('clear', 'reset')]
     kept = [e for e in during if not wipes or e['t'] > wipes[-1]['t']]   # on the canvas left
-    driven = [(e['turtle'], s) for e in kept if e['k'] in MOVES
+    background = tuple(wipes[-1].get('background', BACKGROUND)) if wipes else BACKGROUND
+    # a pen of the background's colour erases: it lays no ink, and breaks its line
+    driven = [(e['turtle'], s if s is not None and tuple(s[4:7]) != background else None)
+              for e in kept if e['k'] in MOVES
               for s in (e['ink'] if e['k'] == 'move' else [None])]
     jumps = [e for e in during if e['k'] == 'jump']
     turtles = list(dict.fromkeys(e['turtle'] for e in during if e['k'] in MOVES))

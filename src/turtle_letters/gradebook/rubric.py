@@ -6,6 +6,7 @@ from typing import Dict, List, NamedTuple, Optional
 import yaml
 
 from ..grading.files import shown
+from ..grading.ocr import OcrReading, said as ocr_said, supports
 from ..grading.recognition import Reading
 from .observations import Drawing
 from .roster import EXPECTED
@@ -59,6 +60,7 @@ class Facts(NamedTuple):
     own_triggers: List[str] = []    # its nodes that drive the turtle and published "P" too
     chatter_peak: float = 0.0       # the most messages a second on /chatter
     broken: str = ''                # how the grader's master or simulator was broken, if it was
+    ocr: Optional[OcrReading] = None    # what OCR reads in the ink (ocr.py), beside `readings`
 
 
 class Mark(NamedTuple):
@@ -168,14 +170,39 @@ def drawn(readings):
     return ''.join(r.letter or '?' for r in _shapes(readings))
 
 
+def by_ocr(facts):
+    """Whether the letters are credited on OCR's reading: it reads the
+    expected text confidently where the strokes read something else (the
+    strokes' reading alone never credits a letter it did not read)."""
+    return drawn(facts.readings) != facts.expected and facts.ocr is not None and \
+        supports(facts.ocr, facts.expected)
+
+
+def drawn_text(facts):
+    """The letters drawn, as the row gives them: the strokes' reading, or
+    OCR's where it credits them."""
+    return facts.ocr.text if by_ocr(facts) else drawn(facts.readings)
+
+
 def _right(facts):
-    """(reading, letter) of each expected letter drawn in its place."""
-    return [(r, e) for r, e in zip(_shapes(facts.readings), facts.expected) if r.letter == e]
+    """(reading, letter) of each expected letter drawn in its place: where
+    OCR credits the row and the strokes were read as many letters, each
+    reading with its expected letter (its fit to that letter is its accuracy)."""
+    shapes = _shapes(facts.readings)
+    if by_ocr(facts) and len(shapes) == len(facts.expected):
+        return list(zip(shapes, facts.expected))
+    return [(r, e) for r, e in zip(shapes, facts.expected) if r.letter == e]
 
 
 def _letter(facts, rubric):
+    if by_ocr(facts) and not facts.broken:
+        strokes = drawn(facts.readings) or 'no letter'
+        return 1.0, (f'drew {facts.expected}, as expected: {ocr_said(facts.ocr)}; its strokes '
+                     f'read {strokes}' + _wiped(facts))
     share, line = _letter_read(facts, rubric)
-    return share, line + _wiped(facts)
+    disagree = facts.ocr is not None and facts.ocr.text != drawn(facts.readings) and \
+        _shapes(facts.readings)
+    return share, line + (f' ({ocr_said(facts.ocr)})' if disagree else '') + _wiped(facts)
 
 
 def _letter_read(facts, _):

@@ -203,9 +203,85 @@ def apart(ink):
     return [group for group, _ in groups]
 
 
-def read_row(ink, count=1) -> List[Reading]:
+def columns(ink, cuts, overlap=0.0):
+    """The ink split at the x of each of `cuts` (ascending): each line's
+    parts between two cuts, as the letters between them; a part reaches
+    `overlap` past its cuts (a stroke two touching letters share, an M's
+    last leg as an F's stem, is each letter's)."""
+    bounds = list(zip([-math.inf] + list(cuts), list(cuts) + [math.inf]))
+    letters = []
+    for lo, hi in bounds:
+        parts = []
+        for line in ink:
+            run = []
+            for p in line:
+                if lo - overlap < p[0] <= hi + overlap:
+                    run.append(p)
+                elif run:
+                    parts.append(run)
+                    run = []
+            if run:
+                parts.append(run)
+        letters.append(parts)
+    return letters
+
+
+def cut(ink, expected):
+    """Where to cut the ink into the letters of `expected` side by side, its
+    letters touching (a Z's foot run on into an A's leg): each cut, left to
+    right, where the part before it fits its expected letter best, between
+    0.4 and 1.6 of an even share of the row. The ink (finely sampled) and
+    the cuts."""
+    height = box([p for line in ink for p in line])[3]
+    fine = [samples([line], SAMPLE * height / 2) for line in ink if line]
+    x0, _, width, _ = box([p for line in fine for p in line])
+    share, cuts, left = width / len(expected), [], x0 - 1e-9     # a part is (left, right]
+    for letter in expected[:-1]:
+        options = [left + share * (0.4 + 1.2 * i / 24) for i in range(25)]
+        options = [x for x in options if x < x0 + width] or [left + share]
+        fits = [(_fit_before(fine, left, x, letter), x) for x in options]
+        best = min(fit for fit, _ in fits)
+        # of the cuts that fit as well (to a hundredth), the one through the least ink
+        cuts.append(min((x for fit, x in fits if fit <= best + 0.01),
+                        key=lambda x: sum(abs(p[0] - x) < share / 40 for line in fine for p in line)))
+        left = cuts[-1]
+    return fine, cuts
+
+
+def _fit_before(ink, left, right, letter):
+    part = columns(ink, [left, right])[1]
+    reading = read(part, letter) if part else None
+    return reading.best.fit if reading is not None and reading.best is not None else math.inf
+
+
+def letters_of(ink, expected):
+    """The ink's letters, left to right, each as (its ink alone, its ink
+    reaching SAMPLE of the height past its cuts: a stroke two touching
+    letters share, an M's last leg as an F's stem, is each letter's): set
+    apart by GAP, or where fewer are set apart than `expected` has, cut."""
+    groups = apart(ink)
+    if len(expected) < 2 or len(groups) >= len(expected):
+        return [(group, group) for group in groups]
+    fine, cuts = cut([line for group in groups for line in group], expected)
+    height = box([p for line in fine for p in line])[3]
+    return list(zip(columns(fine, cuts), columns(fine, cuts, SAMPLE * height)))
+
+
+def read_row(ink, expected='') -> List[Reading]:
     """The letters `ink` draws, left to right: the whole read as one when
-    one letter is expected, else each letter set apart by GAP read alone."""
+    one letter is expected, else each letter set apart by GAP read alone;
+    where fewer are set apart than expected, the ink is cut into them, and
+    a letter cut is its expected letter if it reads so alone or with the
+    strokes it shares. The cuts only find the letters; a reading of all
+    the letters says what each is."""
+    count = len(expected) if isinstance(expected, str) else expected
     if count <= 1:
         return [read(ink)]
-    return [read(group) for group in apart(ink)]
+    if not isinstance(expected, str) or len(apart(ink)) >= count:
+        return [read(group) for group in apart(ink)]
+    readings = []
+    for letter, (alone, shared) in zip(expected, letters_of(ink, expected)):
+        first = read(alone)
+        second = read(shared) if first.letter != letter else first
+        readings.append(second if second.letter == letter else first)
+    return readings

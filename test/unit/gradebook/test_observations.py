@@ -196,3 +196,10 @@ def test_only_a_turtlesim_pose_published_by_a_cadets_node_poses_as_turtlesim():
     assert found == dict(pose_publishers=['/fake'], cmd_vel_publishers=['/drawer'],
                          chatter_publishers=['/talker'], chatter_subscribers=['/drawer'],
                          simulator=[])
+
+
+def test_ink_in_the_backgrounds_colour_is_no_ink():
+    """A pen of the background's colour erases: an L drawn with it earns nothing."""
+    erasing = [dict(e, ink=[s[:4] + [69, 86, 255, 3] for s in e['ink']]) for e in line(1, 5.0, 7.0)]
+    d = drawing(erasing + line(5, 7.0, 8.0), [graph()], since=0.5, settle=5.0, until=12.0)
+    assert len(d.strokes) == 1 and d.strokes[0][0] == (7.0, 5.0)

@@ -7,20 +7,23 @@ import pytest
 from turtle_letters.gradebook.observations import Drawing
 from turtle_letters.gradebook.rubric import CRITERIA, Facts, RubricError, grade, load
 from turtle_letters.gradebook.session import Step
-from turtle_letters.grading.recognition import read_row
+from turtle_letters.grading.ocr import read_text
+from turtle_letters.grading.recognition import read_row, turned
+from turtle_letters.letters.font import FONT
 
 DEFAULT = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'config', 'rubric.yaml')
 L_PATH = [(1.0, 3.0), (1.0, 1.0), (2.2, 1.0)]
 OK = Step(True, 'fine')
 
 
-def facts(drawing=None, expected='L', **steps):
+def facts(drawing=None, expected='L', ocr=False, **steps):
     drawing = drawing or Drawing([L_PATH], 1.0, 5.0, 200, [])
     given = dict(build=OK, launch=OK, waited=OK, talker=OK)
     given.update(steps)
     return Facts(expected, '', given['build'], given['launch'], given['waited'],
                  given['talker'], drawing,
-                 read_row(drawing.strokes, len(expected)) if drawing.strokes else [])
+                 read_row(drawing.strokes, expected) if drawing.strokes else [],
+                 ocr=read_text(drawing.strokes, expected) if ocr and drawing.strokes else None)
 
 
 def scores_of(graded):
@@ -199,3 +202,34 @@ def test_a_dash_before_the_initials_costs_neither_the_letters_nor_their_accuracy
                                  expected='AL'), load(DEFAULT)))
     assert said['The letter drawn is the expected one'] == (25, 'drew AL, as expected')
     assert said['Its accuracy'][0] > 19, said['Its accuracy']
+
+
+def glyphs(text, gap, size=2.0, left=1.0, bottom=3.0):
+    ink, x = [], 0.0
+    for letter in text:
+        ink += [[(left + (px + x) * size, bottom + py * size) for px, py in stroke]
+                for stroke in FONT[letter].strokes]
+        x += FONT[letter].width + gap
+    return ink
+
+
+def test_ocr_credits_what_the_strokes_miss_and_the_row_says_both():
+    """A B tilted 40 degrees, past what the strokes' reader turns back (15):
+    OCR reads it turned back, and the letter is credited in its words."""
+    tilted = turned(glyphs('B', 0.0), 40, (2.0, 4.0))
+    said = scores_of(grade(facts(Drawing(tilted, 1.0, 5.0, 90, []), 'B', ocr=True),
+                           load(DEFAULT)))
+    line = said['The letter drawn is the expected one']
+    assert line[0] == 25 and line[1].startswith('drew B, as expected: OCR reads B ('), line
+    assert line[1].endswith(' degrees off level); its strokes read ?'), line
+
+
+def test_neither_reader_credits_a_mirrored_letter_or_another_one():
+    rubric = load(DEFAULT)
+    for drawn, expected in (('N', 'N'), ('R', 'R'), ('P', 'R'), ('E', 'F')):
+        ink = glyphs(drawn, 0.0)
+        if drawn == expected:
+            ink = [[(12.0 - x, y) for x, y in line] for line in ink]     # mirrored
+        said = scores_of(grade(facts(Drawing(ink, 1.0, 5.0, 90, []), expected, ocr=True),
+                               rubric))
+        assert said['The letter drawn is the expected one'][0] == 0, (drawn, expected, said)

@@ -1,0 +1,121 @@
+"""The letters a person sees in the ink: the ink drawn as a picture, black
+on white, and read by Tesseract (Debian's tesseract-ocr, through
+tesserocr), A-Z only. The second reader beside the strokes'
+(recognition.py): it reads touching letters, outlines and curves as a
+person does, and no template decides what it sees. No ROS here.
+
+The expected text is the hypothesis to verify: the ink is read level and
+turned back by each of TILTS, and a reading of the expected text at
+CONFIDENT or more is kept; else the most confident reading level.
+"""
+import string
+import threading
+from typing import NamedTuple
+
+from .recognition import box, letters_of, thinned, turned
+
+GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
+PAD_PX = 16
+CONFIDENT = 80          # Tesseract's confidence (0-100) from which a reading is believed
+TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by to be read
+MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
+_apis = threading.local()       # Tesseract's handles are not shared between threads
+
+
+class OcrReading(NamedTuple):
+    text: str               # A-Z, '' when nothing reads
+    confidence: float       # 0-100
+    tilt: float = 0.0       # degrees the ink lies off level
+
+
+def picture(ink, pen_px=None):
+    """`ink` (lines of (x, y), m) drawn black on white, the row GLYPH_PX high."""
+    from PIL import Image, ImageDraw
+    x0, y0, w, h = box([p for line in ink for p in line])
+    scale = GLYPH_PX / max(h, w / (MAX_WIDTH_PX / GLYPH_PX), 1e-9)
+    width, height = int(w * scale) + 2 * PAD_PX, int(h * scale) + 2 * PAD_PX
+    image = Image.new('L', (width, height), 255)
+    draw = ImageDraw.Draw(image)
+    pen = pen_px or max(2, GLYPH_PX // 10)
+    for line in ink:
+        points = [((x - x0) * scale + PAD_PX, height - ((y - y0) * scale + PAD_PX))
+                  for x, y in line]
+        if len(points) > 1:
+            draw.line(points, fill=0, width=pen, joint='curve')
+        for x, y in points[:1] + points[-1:]:       # round ends, as a pen leaves them
+            draw.ellipse((x - pen / 2, y - pen / 2, x + pen / 2, y + pen / 2), fill=0)
+    return image
+
+
+def _api(letters):
+    """This thread's Tesseract, set to read one line (or one letter) of A-Z."""
+    import tesserocr
+    mode = tesserocr.PSM.SINGLE_CHAR if letters == 1 else tesserocr.PSM.SINGLE_LINE
+    key = f'psm{int(mode)}'
+    api = getattr(_apis, key, None)
+    if api is None:
+        api = tesserocr.PyTessBaseAPI(psm=mode, lang='eng')
+        api.SetVariable('tessedit_char_whitelist', string.ascii_uppercase)
+        setattr(_apis, key, api)
+    return api
+
+
+def _read_picture(ink, letters):
+    api = _api(letters)
+    api.SetImage(picture(ink))
+    text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
+    return text, float(api.MeanTextConf()) if text else 0.0
+
+
+def read_text(ink, expected='') -> OcrReading:
+    """What Tesseract reads in `ink`, as a row of `expected`'s length: the
+    expected text if any tilt reads it at CONFIDENT or more, else the most
+    confident reading of the ink as it lies."""
+    points = [p for line in ink for p in line]
+    if len(points) < 2 or box(points)[3] <= 0:
+        return OcrReading('', 0.0)
+    x, y, w, h = box(points)
+    ink = thinned(ink, h / 200)
+    alone = _letter_by_letter(ink, expected)
+    if supports(alone, expected):
+        return alone
+    level = None
+    for tilt in TILTS:
+        upright = turned(ink, -tilt, (x + w / 2, y + h / 2)) if tilt else ink
+        text, confidence = _read_picture(upright, max(1, len(expected)))
+        if expected and text == expected and confidence >= CONFIDENT:
+            return OcrReading(text, confidence, float(tilt))
+        if tilt == 0:
+            level = OcrReading(text, confidence)
+    return level
+
+
+def _letter_by_letter(ink, expected):
+    """Each letter the strokes' reader sets apart or cuts (level) read
+    alone: letters whose ink touches read as one line may be read alone.
+    The least sure letter's confidence is the row's."""
+    if len(expected) < 2:
+        return OcrReading('', 0.0)
+    read = []
+    for letter, (alone, shared) in zip(expected, letters_of(ink, expected)):
+        text, confidence = _read_picture(alone, 1) if alone else ('', 0.0)
+        if text != letter and shared:
+            text, confidence = max([(text, confidence), _read_picture(shared, 1)],
+                                   key=lambda r: (r[0] == letter, r[1]))
+        read.append((text, confidence))
+    if not read:
+        return OcrReading('', 0.0)
+    return OcrReading(''.join(text for text, _ in read), min(c for _, c in read))
+
+
+def supports(reading: OcrReading, expected: str) -> bool:
+    """Whether the reading is the expected text, confidently."""
+    return bool(expected) and reading.text == expected and reading.confidence >= CONFIDENT
+
+
+def said(reading: OcrReading) -> str:
+    if not reading.text:
+        return 'OCR reads no letter'
+    tilted = f', {abs(reading.tilt):g} degrees off level' if reading.tilt else ''
+    return f'OCR reads {reading.text} ({reading.confidence:.0f}% sure{tilted})'
+
