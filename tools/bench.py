@@ -52,6 +52,7 @@ from support.nodes import (Processes, PoseRecorder, connections, subscribed,  # 
 from turtle_letters.grading.procstat import cpu_seconds, rss_mb  # noqa: E402
 from bench_classroom import classroom_lines, classroom_run, parallel_word_run  # noqa: E402
 from bench_grading import alone_runs, class_run, grading_lines, sandbox_cost  # noqa: E402
+from bench_recognition import recognition_lines, recognition_run  # noqa: E402
 from bench_viewer import soak_run, viewer_lines, viewer_run  # noqa: E402
 from bench_latency import latency_lines, latency_run  # noqa: E402
 
@@ -359,6 +360,7 @@ def table(results, sim):
     lines.extend(word_lines(results))
     lines.extend(classroom_lines(results))
     lines.extend(grading_lines(results))
+    lines.extend(recognition_lines(results))
     lines.extend(viewer_lines(results))
     lines.extend(latency_lines(results))
     sim_f = results['simulator_figures']
@@ -416,6 +418,9 @@ def main():
     parser.add_argument('--latency', default='0,20,50,100',
                         help='ms each way commands and poses are late, per run of every mode '
                              '("" for none)')
+    parser.add_argument('--recognition', default='2000,500',
+                        help='single letters and rows of 2 or 3 read by each reader, no ROS '
+                             '("" for none)')
     parser.add_argument('--out', default='bench-results')
     args = parser.parse_args()
     args.letter = args.letter.upper()
@@ -425,6 +430,10 @@ def main():
     sim_kind = open(os.path.join(os.environ['WS'], '.simulator')).read().strip()
 
     graded = {}
+    if args.recognition:
+        singles, rows = (int(n) for n in args.recognition.split(','))
+        print(f'bench: recognition, {singles} letters and {rows} rows...', flush=True)
+        graded['recognition'] = recognition_run(singles, rows)
     if args.grade_class:
         print(f'bench: grade_class.py, a class of {args.grade_class}...', flush=True)
         graded['grade_class'] = class_run(int(args.grade_class), args.out)

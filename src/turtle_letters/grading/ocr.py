@@ -4,9 +4,11 @@ tesserocr), A-Z only. The second reader beside the strokes'
 (recognition.py): it reads touching letters, outlines and curves as a
 person does, and no template decides what it sees. No ROS here.
 
-The expected text is the hypothesis to verify: the ink is read level and
-turned back by each of TILTS, and a reading of the expected text at
-CONFIDENT or more is kept; else the most confident reading level.
+The expected text is the hypothesis to verify: the ink is read level and,
+unless it reads confidently as another text as it lies, turned back by
+each of TILTS; a reading of the expected text at CONFIDENT or more is
+kept, else the reading level. (Turned, a J read as an S at 86%: what
+reads as something else level is not turned until it reads as hoped.)
 """
 import string
 import threading
@@ -17,6 +19,7 @@ from .recognition import box, letters_of, thinned, turned
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
 PAD_PX = 16
 CONFIDENT = 80          # Tesseract's confidence (0-100) from which a reading is believed
+CONFIDENT_TURNED = 90   # ... turned back: each turn is one more chance to see what is hoped
 TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by to be read
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
 _apis = threading.local()       # Tesseract's handles are not shared between threads
@@ -83,10 +86,13 @@ def read_text(ink, expected='') -> OcrReading:
     for tilt in TILTS:
         upright = turned(ink, -tilt, (x + w / 2, y + h / 2)) if tilt else ink
         text, confidence = _read_picture(upright, max(1, len(expected)))
-        if expected and text == expected and confidence >= CONFIDENT:
+        if expected and text == expected and confidence >= (CONFIDENT_TURNED if tilt else
+                                                            CONFIDENT):
             return OcrReading(text, confidence, float(tilt))
         if tilt == 0:
             level = OcrReading(text, confidence)
+            if confidence >= CONFIDENT:     # it reads as another text as it lies: that is it
+                return level
     return level
 
 
@@ -110,7 +116,8 @@ def _letter_by_letter(ink, expected):
 
 def supports(reading: OcrReading, expected: str) -> bool:
     """Whether the reading is the expected text, confidently."""
-    return bool(expected) and reading.text == expected and reading.confidence >= CONFIDENT
+    return bool(expected) and reading.text == expected and \
+        reading.confidence >= (CONFIDENT_TURNED if reading.tilt else CONFIDENT)
 
 
 def said(reading: OcrReading) -> str:

@@ -21,7 +21,7 @@ from ..letters.font import FONT
 
 Point = Tuple[float, float]
 LEVEL = 0.03        # a fit this good level is not tried tilted
-TILTS = (-15, -10, -5, 5, 10, 15)   # degrees a letter is tried off level
+TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
 SAMPLE = 0.02       # share of the height between compared points

@@ -1,0 +1,169 @@
+"""`make bench`'s recognition group: how well each reader reads letters as
+people draw them, on a corpus made here. No ROS.
+
+The corpus: capitals of the Hershey families in Debian's hershey-fonts-data
+(roman simplex, duplex and triplex, italic, script, gothic), the outlines
+of DejaVu's bold capitals (fonttools, fonts-dejavu-core), and the rotate-
+and-move forms cadets draw (recognition.VARIANTS); each at a random tilt
+(+-45 degrees), aspect (0.5 to 2), size (0.5 m to the canvas) and place,
+walked at a random speed in turtlesim's 16 ms steps; rows of 2 or 3 letters
+touching or nearly. Each drawing is graded against its own letters, and
+against another letter or row (a wrong letter credited is the figure that
+must stay 0). Figures for the strokes' reader, OCR, and the two combined
+as the grader combines them.
+"""
+import math
+import random
+import statistics
+import string
+import time
+
+from turtle_letters.grading.ocr import read_text, supports
+from turtle_letters.grading.recognition import VARIANTS, read_row, turned
+from turtle_letters.letters.hershey import load_font
+from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
+
+HERSHEY = ('rowmans', 'rowmand', 'rowmant', 'timesi', 'scripts', 'gothiceng')
+OUTLINES = ('/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf',
+            '/usr/share/fonts/truetype/dejavu/DejaVuSerif-Bold.ttf')
+TARGET_RIGHT, TARGET_WORST_S = 97.0, 1.0
+
+
+def outline_glyphs(path):
+    """{letter: strokes} of a TrueType font's capitals, as outlines (each
+    contour a closed line; curves walked in 8 steps), 1 high."""
+    from fontTools.pens.basePen import BasePen
+    from fontTools.ttLib import TTFont
+    font = TTFont(path)
+    cap = getattr(font['OS/2'], 'sCapHeight', 0) or font['head'].unitsPerEm * 0.73
+    glyph_set, names = font.getGlyphSet(), font.getBestCmap()
+
+    class Outline(BasePen):     # fontTools' way to walk a glyph: its pen protocol
+        def __init__(self):
+            super().__init__(glyph_set)
+            self.lines = []
+
+        def _moveTo(self, p):
+            self.lines.append([p])
+
+        def _lineTo(self, p):
+            self.lines[-1].append(p)
+
+        def _curveToOne(self, a, b, c):
+            start = self.lines[-1][-1]
+            for i in range(1, 9):
+                t = i / 8
+                self.lines[-1].append(tuple(
+                    (1 - t) ** 3 * s + 3 * (1 - t) ** 2 * t * p + 3 * (1 - t) * t ** 2 * q +
+                    t ** 3 * e for s, p, q, e in zip(start, a, b, c)))
+
+        def _closePath(self):
+            self.lines[-1].append(self.lines[-1][0])
+    glyphs = {}
+    for letter in string.ascii_uppercase:
+        pen = Outline()
+        glyph_set[names[ord(letter)]].draw(pen)
+        glyphs[letter] = [[(x / cap, y / cap) for x, y in line] for line in pen.lines]
+    return glyphs
+
+
+def corpus_fonts():
+    """[(family, {letter: strokes})]: Hershey's, DejaVu's outlines, cadets' forms."""
+    fonts = []
+    for name in HERSHEY:
+        font = load_font(name)
+        fonts.append((name, {c: font.glyph(c).strokes for c in string.ascii_uppercase}))
+    for path in OUTLINES:
+        fonts.append((path.rsplit('/', 1)[1][:-4] + ' outline', outline_glyphs(path)))
+    fonts.append(('cadets', {letter: strokes for letter, strokes in VARIANTS}))
+    return fonts
+
+
+def walked(line, step):
+    """A polyline as a turtle leaves it: a point every `step` m along it."""
+    points = [line[0]]
+    for a, b in zip(line, line[1:]):
+        n = max(1, math.ceil(math.dist(a, b) / step))
+        points += [(a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n)
+                   for i in range(1, n + 1)]
+    return points
+
+
+def drawn(glyphs, text, rng):
+    """`text` drawn as a cadet would: its letters side by side, touching or
+    nearly, at a random size, aspect, tilt, place and speed."""
+    aspect, gap = rng.uniform(0.5, 2.0), rng.uniform(-0.03, 0.08)
+    ink, x = [], 0.0
+    for letter in text:
+        strokes = glyphs[letter]
+        left = min(px for s in strokes for px, _ in s)
+        ink += [[((px - left + x) * aspect, py) for px, py in s] for s in strokes]
+        x += max(px for s in strokes for px, _ in s) - left + gap
+    xs, ys = [p[0] for s in ink for p in s], [p[1] for s in ink for p in s]
+    longest = max(max(xs) - min(xs), max(ys) - min(ys))
+    size = rng.uniform(0.5, WORLD_SIZE - 1.0) / longest
+    ink = [[((px - min(xs)) * size, (py - min(ys)) * size) for px, py in s] for s in ink]
+    ink = turned(ink, rng.uniform(-45, 45), (0.0, 0.0))
+    step = rng.uniform(0.5, 2.0) * SIM_TICK
+    return [walked(line, step) for line in ink]
+
+
+def readers(ink, expected):
+    """(strokes read it, OCR read it, seconds of each)."""
+    started = time.monotonic()
+    strokes = ''.join(r.letter or '?' for r in read_row(ink, expected)) == expected
+    middle = time.monotonic()
+    ocr = supports(read_text(ink, expected), expected)
+    return strokes, ocr, middle - started, time.monotonic() - middle
+
+
+def recognition_run(singles=2000, rows=500, seed=1):
+    rng, fonts = random.Random(seed), corpus_fonts()
+    tally = {name: dict(right=0, wrong=0, seconds=[]) for name in ('strokes', 'ocr', 'both')}
+    by_family = {}
+    for n in range(singles + rows):
+        family, glyphs = fonts[n % len(fonts)]
+        letters = sorted(glyphs)
+        text = ''.join(rng.choice(letters) for _ in range(1 if n < singles else rng.choice((2, 3))))
+        other = text
+        while other == text:
+            other = ''.join(rng.choice(string.ascii_uppercase) for _ in text)
+        ink = drawn(glyphs, text, rng)
+        s, o, s_time, o_time = readers(ink, text)
+        ws, wo, _, _ = readers(ink, other)
+        for name, right, wrong, seconds in (('strokes', s, ws, s_time), ('ocr', o, wo, o_time),
+                                            ('both', s or o, ws or wo, s_time + o_time)):
+            tally[name]['right'] += right
+            tally[name]['wrong'] += wrong
+            tally[name]['seconds'].append(seconds)
+        by_family.setdefault(family, []).append(s or o)
+    total = singles + rows
+    return dict(singles=singles, rows=rows, readers={
+        name: dict(right_pct=100 * t['right'] / total, wrong_pct=100 * t['wrong'] / total,
+                   median_s=statistics.median(t['seconds']), worst_s=max(t['seconds']))
+        for name, t in tally.items()},
+        families={f: 100 * sum(r) / len(r) for f, r in by_family.items()})
+
+
+def recognition_lines(results):
+    run = results.get('recognition')
+    if not run:
+        return []
+    lines = [f"recognition, {run['singles']} single letters and {run['rows']} rows of 2 or 3 "
+             f"(tilt +-45, aspect 0.5-2, 0.5 m to the canvas, touching neighbours):"]
+    for name, r in run['readers'].items():
+        lines.append(
+            f"  {name:8s} read right {r['right_pct']:5.1f}%{'!' if r['right_pct'] < TARGET_RIGHT else ''}"
+            f", wrong letter credited {r['wrong_pct']:.2f}%{'!' if r['wrong_pct'] else ''}, "
+            f"per drawing median {r['median_s']:.3f} s, worst {r['worst_s']:.2f} s"
+            f"{'!' if r['worst_s'] > TARGET_WORST_S else ''}")
+    lines.append('  read right by both together, by family: ' + ', '.join(
+        f'{family} {pct:.0f}%' for family, pct in run['families'].items()))
+    return lines
+
+
+if __name__ == '__main__':
+    import sys
+    singles, rows = (int(a) for a in sys.argv[1:3]) if len(sys.argv) > 2 else (2000, 500)
+    for line in recognition_lines({'recognition': recognition_run(singles, rows)}):
+        print(line)
