@@ -92,8 +92,16 @@ def talker_failure(output, work):
     return first_death(output, work) or last_error(output, node_logs(work))
 
 
-def why_still(output, work, listeners):
+def why_still(output, work, listeners, offered=None):
     """Why the turtle never moved after the trigger: a node that died after
-    it, else the last error line of the nodes that listen on /chatter."""
-    return first_death(output, work) or last_error(
+    it, else the last error line of the nodes that listen on /chatter, else
+    the services the package's nodes offer (`offered`: {node: [service]}):
+    a package that draws only when its own service is called."""
+    found = first_death(output, work) or last_error(
         output, *[node_logs(work, name.rsplit('/', 1)[-1]) for name in listeners])
+    if found or not offered:
+        return found
+    return '; '.join(f'{node} waits for a call of {", ".join(services)}'
+                     for node, services in sorted(offered.items())) + \
+        ': the package draws only when it is called, not on P'
+

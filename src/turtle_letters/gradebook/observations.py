@@ -16,6 +16,7 @@ from ..letters.layout import DEFAULT_BACKGROUND
 
 WATCHER = '/grade_watch'    # the grader's watcher's node name (watch.py)
 POSE_TYPE = 'turtlesim/Pose'    # what a turtle's pose is published as
+TURTLESIM_SERVICES = ('/spawn', '/kill', '/clear', '/reset')
 COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 MOVES = ('move', 'jump')    # record lines of a turtle changing place or heading
@@ -171,7 +172,20 @@ def roles(state, types, ours):
                                     if n not in ours],
                 chatter_subscribers=[n for n in dict(subscribers).get('/chatter', [])
                                      if n not in ours],
-                simulator=[n for n in dict(services).get('/spawn', []) if n not in ours])
+                simulator=[n for n in dict(services).get('/spawn', []) if n not in ours],
+                offered=_offered(services, ours))
+
+
+def _offered(services, ours):
+    """{node: [its services]} of the nodes not ours, but what every rospy
+    and roscpp node serves (its loggers)."""
+    offered = {}
+    for service, nodes in services:
+        for node in nodes:
+            if node not in ours and not service.endswith(('/get_loggers', '/set_logger_level')) \
+                    and service not in TURTLESIM_SERVICES:
+                offered.setdefault(node, []).append(service)
+    return {node: sorted(found) for node, found in offered.items()}
 
 
 def last_graph(events):

@@ -24,7 +24,7 @@ from .processes import ControllerCpu, JsonLines, Reader
 from .reports import plain
 from .rubric import Limits
 from .sandbox import Cgroup, GiB, Sandbox
-from .submission import MAX_NODES, Package, copy, scripts
+from .submission import MAX_NODES, Package, copy, made_executable, scripts
 from .world import GradingWorld, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
@@ -81,11 +81,13 @@ def _env(work, master_uri):
 def prepare(package, work):
     """The work folder: the package's copy in a workspace, a home, a folder
     for temporary files, and `python` for scripts that say
-    `#!/usr/bin/env python` (Noetic's is python3)."""
+    `#!/usr/bin/env python` (Noetic's is python3). The scripts handed in
+    without the execute bit, made executable (a TA's fallback)."""
     for folder in ('ws/src', 'home', 'tmp', 'bin'):
         os.makedirs(os.path.join(work, folder), exist_ok=True)
-    copy(package, os.path.join(work, 'ws'))
+    copied = copy(package, os.path.join(work, 'ws'))
     os.symlink('/usr/bin/python3', os.path.join(work, 'bin', 'python'))
+    return made_executable(copied)
 
 
 def build(box, limits):
@@ -237,17 +239,40 @@ def wait_until(condition, seconds, alive=lambda: True):
 
 
 def run(package: Package, limits: Limits, box: Sandbox) -> Run:
-    """Copy, build, launch, type P, watch: the whole run of one submission, in `box`."""
+    """Copy, build, launch, type P, watch: the whole run of one submission,
+    in `box`; with a TA's fallbacks, each costing `launches` alone and said
+    there: scripts handed in without the execute bit run all the same, and
+    a launch file that cannot start its nodes (a wrong pkg or type) gives
+    way to the package's executables, started as without a launch file."""
     result = Run(package)
-    prepare(package, box.work)
+    made = prepare(package, box.work)
     stand_in(box.work)
     box.hand_over()
     result.build, output = build(box, limits)
     result.log.append(('catkin_make', output))
     result.limit = box.reached()
-    if result.build.ok and not result.limit and not box.stopped:
+    if not result.build.ok or result.limit or box.stopped:
+        return result
+    _launch_and_watch(box, limits, result)
+    if _refused(result) and not (result.limit or box.stopped):
+        first, refused = result, result.launch.says
+        result = Run(package._replace(launch=None))     # a fresh world, the same build
+        result.build, result.log = first.build, first.log
         _launch_and_watch(box, limits, result)
+        result.launch = Step(False, f'{refused}; the grader ran its executables instead '
+                                    f'({result.generated}), as a TA would')
+    elif made and result.launch is not None and result.launch.ok:
+        result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
+                                    f'the grader made {"them" if len(made) > 1 else "it"} '
+                                    f'executable, as a TA would', result.launch.seconds)
     return result
+
+
+def _refused(result):
+    """Whether roslaunch refused to start a node of the package's launch file."""
+    return bool(result.package.launch) and result.launch is not None and \
+        not result.launch.ok and result.launch.says.startswith('cannot launch node')
+
 
 
 def generated_launch(box, package):
@@ -409,7 +434,8 @@ def _explain(result, terminal, work):
     if result.still_from is not None:
         graph = seen.last_graph(result.events)
         result.stuck = why_still(terminal.text(result.still_from), work,
-                                 graph['chatter_subscribers'] if graph else [])
+                                 graph['chatter_subscribers'] if graph else [],
+                                 graph.get('offered') if graph else None)
 
 
 def _stood(record, since, settle):

@@ -72,3 +72,9 @@ def test_of_a_flood_of_log_files_only_some_are_read_and_none_deeper_than_roslaun
     read = failures.node_logs(str(tmp_path))
     assert read.count('RuntimeError') == failures.LOGS_READ
     assert 'too deep' not in read
+
+
+def test_a_package_that_draws_only_on_its_own_service_call_says_so(tmp_path):
+    said = why_still('', str(tmp_path), ['/listener'], {'/writer': ['/turtle_write']})
+    assert said == ('/writer waits for a call of /turtle_write: the package draws only when it '
+                    'is called, not on P')

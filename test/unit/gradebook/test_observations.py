@@ -195,7 +195,15 @@ def test_only_a_turtlesim_pose_published_by_a_cadets_node_poses_as_turtlesim():
     found = roles(state, types, ('/grade_watch', '/grading_turtlesim'))
     assert found == dict(pose_publishers=['/fake'], cmd_vel_publishers=['/drawer'],
                          chatter_publishers=['/talker'], chatter_subscribers=['/drawer'],
-                         simulator=[])
+                         simulator=[], offered={})
+
+
+def test_the_services_a_cadets_nodes_offer_are_named_but_their_loggers():
+    state = ([], [], [['/spawn', ['/grading_turtlesim']], ['/turtle_write', ['/writer']],
+                      ['/writer/get_loggers', ['/writer']], ['/writer/set_logger_level', ['/writer']],
+                      ['/grade_watch/get_loggers', ['/grade_watch']]])
+    found = roles(state, [], ('/grade_watch', '/grading_turtlesim'))
+    assert found['offered'] == {'/writer': ['/turtle_write']}
 
 
 def test_ink_in_the_backgrounds_colour_is_no_ink():
