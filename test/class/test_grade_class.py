@@ -30,7 +30,8 @@ CONCLUSIONS = {
     'c03_lena': ('L', 'L', 'pass', 'every criterion met'),
     'c04_maria': ('M', 'N', 'fail', 'drew N, expected M'),
     'c05_omar': ('O', '', 'fail', "It builds: catkin_make failed"),
-    'c06_pavel': ('P', '', 'fail', 'Cannot locate node of type [controler.py]'),
+    # a misspelt type in his launch file: his executables run instead, as a TA would
+    'c06_pavel': ('P', 'N', 'fail', 'Cannot locate node of type [controler.py]'),
     'c07_quinn': ('Q', 'O', 'fail', 'drew O, expected Q'),
     'c08_tariq': ('T', '', 'fail', 'no ink was driven: 3 teleports laid all there is'),
     'c09_fatima': ('F', '', 'fail', 'nothing was drawn'),

@@ -10,6 +10,7 @@ A turtlesim_node the submission's launch file starts finds STAND_IN first:
 it stays up as long as the launch wants, draws nothing, and registers no
 node, so it never displaces the grader's simulator.
 """
+import itertools
 import math
 import os
 import signal
@@ -20,6 +21,7 @@ import time
 from .processes import JsonLines
 from .sandbox import Cgroup, GiB
 
+_WORLDS = itertools.count(1)
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
 MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
 MAX_TURTLES = 64                # turtles the grader's simulator holds at once (~max_turtles)
@@ -129,7 +131,7 @@ class GradingWorld:
 
     def __init__(self, box):
         self.box, self.user = box, box.world_user     # never a submission's
-        self.home = os.path.join(box.scratch, 'world')
+        self.home = os.path.join(box.scratch, f'world{next(_WORLDS)}')    # a fallback's is new
         self.record = JsonLines(MAX_RECORD, lambda e: isinstance(e, dict) and 'k' in e and 't' in e)
         self.events = self.record.items     # the record as it comes
         self.master = self.simulator = self.reader = self.cgroup = None
