@@ -32,7 +32,8 @@ _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
 _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
 # How cadets draw letters with rotate and move, beside the font's glyphs:
 # square corners, a K's arms meeting at the stem's middle, an A's bar from a
-# quarter to half its height, an N with level feet, an I of one stroke. A
+# quarter to half its height, an N with level feet, M and N as zigzags (a
+# real class's MF), an I of one stroke. A
 # square-cornered O is an O: no D is drawn with four right angles.
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
@@ -45,7 +46,9 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('J', [[(0.6, 1), (0.6, 0), (0, 0), (0, 0.3)]]),
     ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
     ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
+    ('M', [[(0, 0), (0.175, 1), (0.35, 0), (0.525, 1), (0.7, 0)]]),     # a zigzag, no upright
     ('N', [[(0, 0), (0, 1), (0.6, 0), (0.6, 1)]]),
+    ('N', [[(0, 0), (0.15, 1), (0.45, 0), (0.6, 1)]]),                   # a zigzag
     ('O', [_SQUARE_O]),
     ('P', [_SQUARE_P]),
     ('Q', [_SQUARE_O, [(0.35, 0.3), (0.6, 0)]]),

@@ -134,3 +134,11 @@ def test_thinning_a_dense_letter_keeps_its_reading_and_its_fit():
     sparse = [dense[0][::10]]
     a, b = read(dense), read(sparse)
     assert a.letter == b.letter == 'N' and abs(a.best.fit - b.best.fit) < 0.01
+
+
+@pytest.mark.parametrize('letter, zigzag', [
+    ('M', [(0, 0), (0.2, 1), (0.4, 0), (0.6, 1), (0.8, 0)]),
+    ('N', [(0, 0), (0.2, 1), (0.5, 0), (0.7, 1)])])
+def test_m_and_n_drawn_as_zigzags_with_no_upright_leg(letter, zigzag):
+    reading = read([placed(retraced([zigzag]), 2.0, 2.0, 2.0)])
+    assert reading.letter == letter, reading.best
