@@ -26,8 +26,17 @@ def why_not_launched(output, events, work):
         return died
     if graph is None:
         return last_error(output) or "the grader's watcher saw no ROS graph"
+    if graph.get('offered'):
+        return f'no node subscribed to /chatter, and no turtle moved: {waits_for_calls(graph)}'
     return ('no node subscribed to /chatter, and no turtle moved: is the controller started by '
             'the launch file?')
+
+
+def waits_for_calls(graph):
+    """The package's nodes that offer services of their own, in words."""
+    return '; '.join(f'{node} waits for a call of {", ".join(services)}'
+                     for node, services in sorted(graph['offered'].items())) + \
+        ': the package draws only when it is called, not on P'
 
 
 def last_error(*texts):
@@ -101,7 +110,5 @@ def why_still(output, work, listeners, offered=None):
         output, *[node_logs(work, name.rsplit('/', 1)[-1]) for name in listeners])
     if found or not offered:
         return found
-    return '; '.join(f'{node} waits for a call of {", ".join(services)}'
-                     for node, services in sorted(offered.items())) + \
-        ': the package draws only when it is called, not on P'
+    return waits_for_calls(dict(offered=offered))
 

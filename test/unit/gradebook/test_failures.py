@@ -78,3 +78,10 @@ def test_a_package_that_draws_only_on_its_own_service_call_says_so(tmp_path):
     said = why_still('', str(tmp_path), ['/listener'], {'/writer': ['/turtle_write']})
     assert said == ('/writer waits for a call of /turtle_write: the package draws only when it '
                     'is called, not on P')
+
+
+def test_a_lab_that_never_came_up_but_offers_a_service_says_so(tmp_path):
+    graph = dict(kind='graph', t=1.0, chatter_subscribers=[], offered={'/server': ['/draw']})
+    assert why_not_launched('', [graph], str(tmp_path)) == (
+        'no node subscribed to /chatter, and no turtle moved: /server waits for a call of '
+        '/draw: the package draws only when it is called, not on P')
