@@ -3,6 +3,7 @@ import os
 import subprocess
 import tempfile
 import time
+import uuid
 
 
 class Terminal:
@@ -10,7 +11,10 @@ class Terminal:
     and never touches the user's tmux; closed (and its server killed) by close()."""
 
     def __init__(self, command, width=120, height=40, cwd=False):
-        self.socket = f'turtle_letters_test_{os.getpid()}_{id(self)}'
+        # a name of its own: an id() comes back once its object is freed, and
+        # a server of that name still shutting down refused the new session
+        # ("server exited unexpectedly", seen in a fresh clone's run)
+        self.socket = f'turtle_letters_test_{os.getpid()}_{uuid.uuid4().hex}'
         self.dir = tempfile.mkdtemp(prefix='turtle_letters_tty_')
         self._tmux('new-session', '-d', '-x', str(width), '-y', str(height), '-s', 'test',
                    '-c', self.dir if cwd else os.getcwd(), 'bash --norc --noprofile')
