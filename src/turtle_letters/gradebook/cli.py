@@ -216,7 +216,8 @@ def draw_picture(out, row, facts):
     """OUT/ID/drawing.png: the ink over the letters read from it, the
     expected ones named (Qt: main thread only). Only a letter read is drawn
     under the ink: a guess's ideal strokes shown as if expected mislead."""
-    fits = [r.best for r in facts.readings if r.letter is not None]
+    right = rubrics.credited(facts)
+    fits = [r.fits[e] for r, e in right] or [r.best for r in facts.readings if r.letter]
     if not fits:
         return row
     from ..grading.picture import draw

@@ -184,6 +184,11 @@ def drawn_text(facts):
     return facts.ocr.text if by_ocr(facts) else drawn(facts.readings)
 
 
+def credited(facts):
+    """(reading, letter) of each expected letter credited in its place."""
+    return _right(facts) if _letter(facts, None)[0] > 0 else []
+
+
 def _right(facts):
     """(reading, letter) of each expected letter drawn in its place: where
     OCR credits the row and the strokes were read as many letters, each

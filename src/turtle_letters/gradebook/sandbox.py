@@ -57,6 +57,7 @@ RULES = [
 # simulator): the system read-only, and no one's home, the grader's included.
 BESIDE_RULES = [
     (['--ro-bind', '/', '/'], 'the system, read-only'),
+    (['--dev', '/dev'], 'a /dev of its own (/dev/null writable)'),
     (['--tmpfs', '/root'], "nothing of root's home"),
     (['--tmpfs', '/home'], "nothing of the users' homes"),
     (['--die-with-parent'], 'ends when the grader ends'),

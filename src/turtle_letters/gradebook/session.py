@@ -67,9 +67,9 @@ class Run:
         self.finished = None    # t the run stopped watching
 
 
-def _env(work, master_uri):
+def _env(work, master_uri, isolated=True):
     env = {name: os.environ[name] for name in ROS_VARIABLES if name in os.environ}
-    env.update(course_environment(os.environ))
+    env.update(course_environment(os.environ, isolated))
     env.update(HOME=os.path.join(work, 'home'), ROS_HOME=os.path.join(work, 'home', '.ros'),
                TMPDIR=os.path.join(work, 'tmp'),       # its own, with or without a sandbox
                PATH=f"{os.path.join(work, 'bin')}:/usr/bin:/bin:{os.environ.get('PATH', '')}",
@@ -98,7 +98,8 @@ def build(box, limits):
                              '-DPYTHON_EXECUTABLE=/usr/bin/python3', box.work, str(jobs)]
     started = time.monotonic()
     process = box.started(subprocess.Popen(
-        box.inside(command, _env(box.work, box.master_uri)), stdin=subprocess.DEVNULL,
+        box.inside(command, _env(box.work, box.master_uri, box.isolated)),
+        stdin=subprocess.DEVNULL,
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True))
     reader = Reader(os.dup(process.stdout.fileno()))
     process.stdout.close()
@@ -311,7 +312,7 @@ def _launch_and_watch(box, limits, result):
         command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && '
                    'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && shift && '
                    'exec roslaunch "$@"', work, os.path.join(work, 'stand_in')] + launch
-        terminal = Terminal(box.inside(command, _env(work, box.master_uri)), box)
+        terminal = Terminal(box.inside(command, _env(work, box.master_uri, box.isolated)), box)
     except BaseException:
         world.stop()
         raise
