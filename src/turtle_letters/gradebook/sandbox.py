@@ -411,7 +411,7 @@ class Sandbox:
         self.master_uri = f'http://127.0.0.1:{port}'
         self.cgroup = self.scratch = self.work = None
         self.stopped = False    # grading was stopped (Ctrl-C): what runs in it is ended
-        self.sessions = []      # the process groups the grader started for it
+        self.sessions, self.others = [], []     # process groups started for it; cgroups beside it
 
     def __enter__(self):
         self.scratch = tempfile.mkdtemp(prefix='turtle_letters_sandbox_')
@@ -432,8 +432,7 @@ class Sandbox:
         return self
 
     def runs_as_its_user(self):
-        """Whether its commands run as its user: always in a sandbox, and
-        outside one (--no-sandbox) wherever the grader is root."""
+        """Whether its commands run as its user: in a sandbox, or outside one as root."""
         return self.isolated or os.geteuid() == 0
 
     def hand_over(self):
@@ -448,8 +447,8 @@ class Sandbox:
                   else _all_pids())
 
     def __exit__(self, *_):
-        if self.cgroup is not None:
-            self.cgroup.remove()
+        for cgroup in filter(None, [self.cgroup] + self.others):
+            cgroup.remove()
         self.kill_world()
         if not self.isolated and self.runs_as_its_user():     # no PID namespace: by its user
             kill_user(self.user)
@@ -473,10 +472,15 @@ class Sandbox:
         for pid in self.sessions:
             with contextlib.suppress(OSError):
                 os.killpg(pid, signal.SIGKILL)
-        if self.cgroup is not None:
-            self.cgroup.kill()
+        for cgroup in filter(None, [self.cgroup] + self.others):
+            cgroup.kill()
         if not self.isolated and self.runs_as_its_user():
             kill_user(self.user)
+
+    def limited(self, suffix, limits):
+        """A cgroup of `limits` for processes beside it, ended and removed with it."""
+        self.others.append(Cgroup(self.namespace + suffix, limits))
+        return self.others[-1]
 
     def reached(self):
         """The words of the first limit the submission reached, or ''."""
@@ -487,28 +491,29 @@ class Sandbox:
             return DISK[1](DISK[0])
         return self.cgroup.reached()
 
-    def _pinned(self):
-        """The core given, by taskset (in a sandbox, its cgroup's cpuset holds it)."""
-        return ['taskset', '-c', str(self.cpus[0])] if self.cpus else []
-
     def beside(self, argv, user=None, readable=(), writable=()):
         """`argv` in its network namespace, not its sandbox: as the grader,
         or as `user` (_as_user_beside)."""
         run = list(argv) if user is None else \
             _as_user_beside(user, argv, readable, writable, self.isolated)
-        return self._pinned() + (['ip', 'netns', 'exec', self.namespace] if self.isolated
+        return _pinned(self.cpus) + (['ip', 'netns', 'exec', self.namespace] if self.isolated
                                  else []) + run
 
     def inside(self, argv, env):
         """`argv` in the sandbox, with only `env` set."""
         if not self.isolated:
-            return self._pinned() + ['env', '-i'] + \
+            return _pinned(self.cpus) + ['env', '-i'] + \
                 [f'{k}={v}' for k, v in sorted(env.items())] + \
                 (as_user(self.user) if self.runs_as_its_user() else []) + list(argv)
         rules = _rules(self.scratch, self.work, self.hidden) + ['--clearenv'] + \
             [option for name, value in sorted(env.items()) for option in ('--setenv', name, value)]
         return self.cgroup.joining() + ['ip', 'netns', 'exec', self.namespace, 'bwrap'] + \
             rules + ['--'] + as_user(self.user) + list(argv)
+
+
+def _pinned(cpus):
+    """The core given, by taskset (in a sandbox, its cgroup's cpuset holds it)."""
+    return ['taskset', '-c', str(cpus[0])] if cpus else []
 
 
 def _writable_space(scratch, user):

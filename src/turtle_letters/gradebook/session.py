@@ -23,7 +23,7 @@ from .failures import talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, JsonLines, Reader
 from .reports import plain
 from .rubric import Limits
-from .sandbox import Cgroup, GiB, Sandbox
+from .sandbox import GiB, Sandbox
 from .submission import MAX_NODES, Package, copy, made_executable, scripts
 from .world import GradingWorld, course_environment, stand_in, stand_in_started
 
@@ -170,7 +170,7 @@ class Watcher:
     which the submission cannot reach."""
 
     def __init__(self, box):
-        self.cgroup = Cgroup(f'{box.namespace}a', WATCHER_LIMITS) if box.isolated else None
+        self.cgroup = box.limited('a', WATCHER_LIMITS) if box.isolated else None
         self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
         env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
                    ROS_HOME=self.home, PYTHONUNBUFFERED='1')

@@ -19,7 +19,7 @@ import threading
 import time
 
 from .processes import JsonLines
-from .sandbox import Cgroup, GiB, closed_folder
+from .sandbox import GiB, closed_folder
 
 _WORLDS = itertools.count(1)
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
@@ -159,7 +159,7 @@ class GradingWorld:
         os.mkdir(self.home, 0o700)
         os.chown(self.home, self.user, self.user)
         if self.box.isolated:
-            self.cgroup = Cgroup(f'{self.box.namespace}w', LIMITS)
+            self.cgroup = self.box.limited('w', LIMITS)     # removed with the box too
         log = open(os.path.join(self.home, 'world.log'), 'wb')
         port = self.box.master_uri.rsplit(':', 1)[1]
         # rosmaster itself, not roscore: roscore's roslaunch would leave its
