@@ -105,7 +105,7 @@ def test_the_files_handed_back(graded):
     log = open(os.path.join(out, 'c01_nadia', 'log.txt')).read()
     assert 'catkin_make' in log and "NameError: name 'raw_input' is not defined" in log
     suite = ElementTree.parse(os.path.join(out, 'junit.xml')).getroot()
-    assert suite.get('tests') == '22' and suite.get('failures') == '10'
+    assert suite.get('tests') == '23' and suite.get('failures') == '10'
 
 
 def test_nothing_is_left_behind(graded):

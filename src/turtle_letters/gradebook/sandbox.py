@@ -547,9 +547,12 @@ def _as_user_beside(user, argv, readable, writable, isolated):
     that also shows the `readable` and `writable` folders: so it reaches
     what it runs wherever the package lies (a checkout in a 0700 home),
     and no one's home. Without a sandbox (a container that is one already),
-    no bubblewrap."""
+    no bubblewrap: as `user` where it reaches what it runs, else as the
+    grader (a checkout in /root, graded --no-sandbox), whom the submission's
+    user cannot signal either."""
     if not isolated:
-        return as_user(user) + list(argv)
+        return list(argv) if any(closed_folder(path) for path in readable) else \
+            as_user(user) + list(argv)
     return ['bwrap'] + _beside_rules(readable, writable) + ['--'] + as_user(user) + list(argv)
 
 
