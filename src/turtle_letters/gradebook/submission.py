@@ -178,33 +178,12 @@ def find(top) -> Package:
     return Package(name, folder, launch, '', others, notes)
 
 
-def scripts(folder, depth=3):
-    """The names of the executable plain files in a package's folders, as
-    rosrun finds them (links are not followed), to `depth` folders deep."""
-    found, stack = set(), [(folder, 0)]
-    while stack and len(found) < MAX_NODES:
-        here, level = stack.pop()
-        try:
-            entries = list(os.scandir(here))
-        except OSError:
-            continue
-        for entry in entries:
-            if entry.is_dir(follow_symlinks=False) and entry.name not in SKIPPED \
-                    and not entry.name.startswith('.') and level < depth:
-                stack.append((entry.path, level + 1))
-            elif entry.is_file(follow_symlinks=False) and os.access(entry.path, os.X_OK) \
-                    and not entry.name.startswith('.'):
-                found.add(entry.name)
-    return sorted(found)[:MAX_NODES]
-
-
-def made_executable(folder, depth=3):
-    """A TA's fallback: the plain files under `folder` (the package's copy)
-    that start with #! but were handed in without the execute bit (mode
-    644), made executable, as a TA would before running them. Their paths
-    in the package."""
-    made, stack = [], [(folder, 0)]
-    while stack and len(made) < MAX_NODES:
+def _plain_files(folder, depth, enough):
+    """The plain files in a package's folders, as rosrun walks them (links
+    not followed, SKIPPED and hidden folders left out), to `depth` folders
+    deep, in name order within a folder; `enough(found)` stops the walk."""
+    found, stack = [], [(folder, 0)]
+    while stack and not enough(found):
         here, level = stack.pop()
         try:
             entries = sorted(os.scandir(here), key=lambda e: e.name)
@@ -214,10 +193,33 @@ def made_executable(folder, depth=3):
             if entry.is_dir(follow_symlinks=False) and entry.name not in SKIPPED \
                     and not entry.name.startswith('.') and level < depth:
                 stack.append((entry.path, level + 1))
-            elif entry.is_file(follow_symlinks=False) and not os.access(entry.path, os.X_OK) \
-                    and _starts_with_shebang(entry.path):
-                os.chmod(entry.path, entry.stat(follow_symlinks=False).st_mode | 0o111)
-                made.append(os.path.relpath(entry.path, folder))
+            elif entry.is_file(follow_symlinks=False) and not entry.name.startswith('.'):
+                found.append(entry)
+    return found
+
+
+def scripts(folder, depth=3):
+    """The names of the executable plain files in a package's folders, as
+    rosrun finds them, to `depth` folders deep."""
+    files = _plain_files(folder, depth, lambda found: len(_executable(found)) >= MAX_NODES)
+    return sorted({entry.name for entry in _executable(files)})[:MAX_NODES]
+
+
+def _executable(entries):
+    return [entry for entry in entries if os.access(entry.path, os.X_OK)]
+
+
+def made_executable(folder, depth=3):
+    """A TA's fallback: the plain files under `folder` (the package's copy)
+    that start with #! but were handed in without the execute bit (mode
+    644), made executable, as a TA would before running them. Their paths
+    in the package."""
+    made = []
+    for entry in _plain_files(folder, depth, lambda found: False):
+        if not os.access(entry.path, os.X_OK) and _starts_with_shebang(entry.path) \
+                and len(made) < MAX_NODES:
+            os.chmod(entry.path, entry.stat(follow_symlinks=False).st_mode | 0o111)
+            made.append(os.path.relpath(entry.path, folder))
     return sorted(made)
 
 

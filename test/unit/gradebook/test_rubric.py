@@ -8,8 +8,9 @@ from turtle_letters.gradebook.observations import Drawing
 from turtle_letters.gradebook.rubric import CRITERIA, Facts, RubricError, grade, load
 from turtle_letters.gradebook.session import Step
 from turtle_letters.grading.ocr import read_text
-from turtle_letters.grading.recognition import read_row, turned
-from turtle_letters.letters.font import FONT
+from turtle_letters.grading.recognition import read_row
+
+from support.glyph_rows import row
 
 DEFAULT = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'config', 'rubric.yaml')
 L_PATH = [(1.0, 3.0), (1.0, 1.0), (2.2, 1.0)]
@@ -204,15 +205,6 @@ def test_a_dash_before_the_initials_costs_neither_the_letters_nor_their_accuracy
     assert said['Its accuracy'][0] > 19, said['Its accuracy']
 
 
-def glyphs(text, gap, size=2.0, left=1.0, bottom=3.0):
-    ink, x = [], 0.0
-    for letter in text:
-        ink += [[(left + (px + x) * size, bottom + py * size) for px, py in stroke]
-                for stroke in FONT[letter].strokes]
-        x += FONT[letter].width + gap
-    return ink
-
-
 def test_ocr_credits_what_the_strokes_miss_and_the_row_says_both():
     """A K in Hershey's roman triplex (each stroke drawn three times, with
     serifs), which no stroke template fits: OCR reads it, and the letter
@@ -229,7 +221,7 @@ def test_ocr_credits_what_the_strokes_miss_and_the_row_says_both():
 def test_neither_reader_credits_a_mirrored_letter_or_another_one():
     rubric = load(DEFAULT)
     for drawn, expected in (('N', 'N'), ('R', 'R'), ('P', 'R'), ('E', 'F')):
-        ink = glyphs(drawn, 0.0)
+        ink = row(drawn, 0.0)
         if drawn == expected:
             ink = [[(12.0 - x, y) for x, y in line] for line in ink]     # mirrored
         said = scores_of(grade(facts(Drawing(ink, 1.0, 5.0, 90, []), expected, ocr=True),

@@ -5,17 +5,8 @@ import pytest
 
 from turtle_letters.grading.ocr import CONFIDENT, read_text, supports
 from turtle_letters.grading.recognition import turned
-from turtle_letters.letters.font import FONT
 
-
-def row(text, gap=0.1, size=2.0, left=1.0, bottom=3.0):
-    """`text` in the builtin font, each letter `gap` (share of the height) after the last."""
-    ink, x = [], 0.0
-    for letter in text:
-        ink += [[(left + (px + x) * size, bottom + py * size) for px, py in stroke]
-                for stroke in FONT[letter].strokes]
-        x += FONT[letter].width + gap
-    return ink
+from support.glyph_rows import row
 
 
 @pytest.mark.parametrize('text', ['K', 'ZA', 'CC', 'JD', 'MIT'])
