@@ -22,49 +22,10 @@ from turtle_letters.grading.ocr import read_text, supports
 from turtle_letters.grading.recognition import VARIANTS, read_row, turned
 from turtle_letters.letters.hershey import load_font
 from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
+from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
 
 HERSHEY = ('rowmans', 'rowmand', 'rowmant', 'timesi', 'scripts', 'gothiceng')
-OUTLINES = ('/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf',
-            '/usr/share/fonts/truetype/dejavu/DejaVuSerif-Bold.ttf')
 TARGET_RIGHT, TARGET_WORST_S = 97.0, 1.0
-
-
-def outline_glyphs(path):
-    """{letter: strokes} of a TrueType font's capitals, as outlines (each
-    contour a closed line; curves walked in 8 steps), 1 high."""
-    from fontTools.pens.basePen import BasePen
-    from fontTools.ttLib import TTFont
-    font = TTFont(path)
-    cap = getattr(font['OS/2'], 'sCapHeight', 0) or font['head'].unitsPerEm * 0.73
-    glyph_set, names = font.getGlyphSet(), font.getBestCmap()
-
-    class Outline(BasePen):     # fontTools' way to walk a glyph: its pen protocol
-        def __init__(self):
-            super().__init__(glyph_set)
-            self.lines = []
-
-        def _moveTo(self, p):
-            self.lines.append([p])
-
-        def _lineTo(self, p):
-            self.lines[-1].append(p)
-
-        def _curveToOne(self, a, b, c):
-            start = self.lines[-1][-1]
-            for i in range(1, 9):
-                t = i / 8
-                self.lines[-1].append(tuple(
-                    (1 - t) ** 3 * s + 3 * (1 - t) ** 2 * t * p + 3 * (1 - t) * t ** 2 * q +
-                    t ** 3 * e for s, p, q, e in zip(start, a, b, c)))
-
-        def _closePath(self):
-            self.lines[-1].append(self.lines[-1][0])
-    glyphs = {}
-    for letter in string.ascii_uppercase:
-        pen = Outline()
-        glyph_set[names[ord(letter)]].draw(pen)
-        glyphs[letter] = [[(x / cap, y / cap) for x, y in line] for line in pen.lines]
-    return glyphs
 
 
 def corpus_fonts():
@@ -73,7 +34,7 @@ def corpus_fonts():
     for name in HERSHEY:
         font = load_font(name)
         fonts.append((name, {c: font.glyph(c).strokes for c in string.ascii_uppercase}))
-    for path in OUTLINES:
+    for path in DEJAVU_BOLD:
         fonts.append((path.rsplit('/', 1)[1][:-4] + ' outline', outline_glyphs(path)))
     fonts.append(('cadets', {letter: strokes for letter, strokes in VARIANTS}))
     return fonts

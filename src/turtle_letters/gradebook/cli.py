@@ -29,7 +29,7 @@ import traceback
 import rospkg
 
 from ..grading.files import shown
-from ..grading.ocr import read_text
+from ..grading.ocr import read_text, said as ocr_said
 from ..grading.recognition import read_row
 from . import observations as seen
 from . import reports, rubric as rubrics, sandbox, session, submission
@@ -213,22 +213,25 @@ def leaderboard(facts, run):
 
 
 def draw_picture(out, row, facts):
-    """OUT/ID/drawing.png: the ink over the letters read from it, the
-    expected ones named (Qt: main thread only). Only a letter read is drawn
-    under the ink: a guess's ideal strokes shown as if expected mislead."""
-    right = rubrics.credited(facts)
-    fits = [r.fits[e] for r, e in right] or [r.best for r in facts.readings if r.letter]
-    if not fits:
+    """OUT/ID/drawing.png: the ink as turtlesim drew it, and over it each
+    letter read, named; the expected letters in words only (Qt: main
+    thread only). A guess (ink no letter fits) is never drawn."""
+    d = facts.drawing
+    if d is None or not d.strokes:
         return row
-    from ..grading.picture import draw
+    from ..grading.picture import draw_ink
+    right = rubrics.credited(facts)
+    letters = [(e if r.letter == e else f'{e} (OCR)', r.fits[e].strokes)
+               for r, e in right if e in r.fits]
+    letters += [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
+                if r.letter and all(r is not c for c, _ in right)]
+    ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
+    caption = (f'{row.id}: expected {facts.expected or "?"}; its strokes read '
+               f'{rubrics.drawn(facts.readings) or "no letter"}{ocr}\n'
+               f'credited: {"".join(e for _, e in right) or "none"}; left: the canvas as '
+               f'turtlesim showed it; right: the ink enlarged, each letter read dashed over it')
     path = os.path.join(reports.folder(out, row.id), 'drawing.png')
-    strokes = [s for fit in fits for s in fit.strokes]
-    worst = max(fits, key=lambda fit: fit.fit)
-    height = max(y for s in worst.strokes for _, y in s) - min(y for s in worst.strokes for _, y in s)
-    half_box = round(min(0.5, max(0.02, 1.5 * worst.fit * height)), 2)
-    label = (f'{row.id}: read {rubrics.drawn(facts.readings)}, expected '
-             f'{facts.expected or "?"}, {100 * worst.fit:.1f}% off')
-    draw(path, strokes, {label: facts.drawing.strokes}, {label: (178, 24, 43)}, half_box)
+    draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, letters, caption)
     return row._replace(picture=os.path.relpath(path, out))
 
 

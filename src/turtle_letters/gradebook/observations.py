@@ -40,6 +40,8 @@ class Drawing(NamedTuple):
     pen_lifts: int = 0          # set_pen calls that lifted a pen
     pens: int = 0               # set_pen calls, from the launch on
     spawns: int = 0             # turtles spawned or killed, from the launch on
+    looks: List[tuple] = []     # (r, g, b, width px) of each stroke, as turtlesim drew it
+    background: tuple = BACKGROUND  # the canvas's colour after the last clear or reset
 
     @property
     def seconds(self):
@@ -96,20 +98,23 @@ def stood_for(record, since, now):
 
 def strokes(lines):
     """Unbroken lines of ink: each turtle's segments joined while each
-    starts where the one before it ended (a segment None breaks its line)."""
-    joined, open_end = [], {}     # turtle: the stroke its last segment ended
+    starts where the one before it ended, in the same pen (a segment None
+    breaks its line); and the look of each line, (r, g, b, width) or ()
+    where the record gave none."""
+    joined, looks, open_end = [], [], {}     # turtle: (the stroke its last segment ended, look)
     for turtle, segment in lines:
         if segment is None:
             open_end.pop(turtle, None)
             continue
-        a, b = (segment[0], segment[1]), (segment[2], segment[3])
-        stroke = open_end.get(turtle)
-        if stroke is None or stroke[-1] != a:
+        a, b, look = (segment[0], segment[1]), (segment[2], segment[3]), tuple(segment[4:8])
+        stroke, was = open_end.get(turtle, (None, None))
+        if stroke is None or stroke[-1] != a or was != look:
             stroke = [a]
             joined.append(stroke)
+            looks.append(look)
         stroke.append(b)
-        open_end[turtle] = stroke
-    return joined
+        open_end[turtle] = stroke, look
+    return joined, looks
 
 
 def _end(record, first, settle, until):
@@ -145,13 +150,14 @@ def drawing(record, events, since, settle, until=math.inf) -> Drawing:
     commands = sum(e['n'] for e in record if e['k'] == 'cmd'
                    and first['t'] <= e['t'] <= stop + 2 * COUNTED)
     wiped = [(e['t'] - first['t'], e['k']) for e in wipes]
-    return Drawing(strokes(driven), first['t'], ended, commands, impostors(events),
+    lines, looks = strokes(driven)
+    return Drawing(lines, first['t'], ended, commands, impostors(events),
                    sum(e.get('n', 1) for e in jumps),
                    sum(1 for e in kept if e['k'] == 'jump' and e['ink']),
                    [e for e in during if e['k'] in MOVES][-1]['t'],
                    wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
                    sum(1 for e in record[1:] if e['k'] == 'pen'),
-                   sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')))
+                   sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')), looks, background)
 
 
 def roles(state, types, ours):

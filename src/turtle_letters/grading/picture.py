@@ -1,6 +1,7 @@
-"""A drawing's picture: the ideal strokes in grey, recorded paths in colour,
-and each vertex enlarged in a box of its own. The grader and the benchmark
-draw theirs with it. Qt offscreen, no ROS."""
+"""Pictures of drawings, Qt offscreen, no ROS: the benchmark's (the ideal
+strokes in grey, recorded paths in colour, each vertex enlarged in a box
+of its own; and the whole canvas) and the class grader's (a student's ink
+as turtlesim drew it, the letters read over it)."""
 import math
 import os
 
@@ -9,7 +10,8 @@ from PyQt5.QtCore import QPointF, QRectF, Qt  # noqa: E402
 from PyQt5.QtGui import QColor, QFont, QImage, QPainter, QPen  # noqa: E402
 from PyQt5.QtWidgets import QApplication  # noqa: E402
 
-from ..letters.layout import WORLD_SIZE  # noqa: E402
+from ..letters.layout import (CANVAS_PIXELS, DEFAULT_PEN, DEFAULT_PEN_WIDTH,  # noqa: E402
+                              WORLD_SIZE)
 from .scoring import distance_to_lines  # noqa: E402
 
 MAIN_SCALE = 90.0          # px per m in the overview
@@ -140,3 +142,75 @@ def draw_canvas(path_png, drawings, tolerance=0.02):
                              line)
     painter.end()
     image.save(path_png, 'PNG')
+
+
+ZOOM_PX = 500       # px: the side of the ink's own box, beside the canvas
+
+
+def draw_ink(path_png, strokes, looks, background, letters, caption):
+    """A student's drawing as a TA sees it: on the left, the canvas as
+    turtlesim showed it (500 px, each stroke in its colour and width);
+    on the right, the ink's box enlarged, with each of `letters` (label,
+    strokes), the letters read, drawn thin and dashed over the ink and
+    named; `caption` (lines) above. Nothing expected is drawn: a guess's
+    shape laid over the ink misleads."""
+    app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
+    lines = caption.split('\n')
+    top = 16 * len(lines) + 10
+    image = QImage(CANVAS_PIXELS + ZOOM_PX + 30, CANVAS_PIXELS + top + 10, QImage.Format_RGB32)
+    image.fill(QColor('white'))
+    painter = QPainter(image)
+    painter.setRenderHint(QPainter.Antialiasing)
+    painter.setFont(QFont('Sans', 9))
+    painter.setPen(QColor('black'))
+    for i, line in enumerate(lines):
+        painter.drawText(10, 16 * (i + 1), line)
+    points = [p for s in strokes for p in s] or [(0.0, 0.0)]
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    side = max(max(xs) - min(xs), max(ys) - min(ys), 0.05) * 1.15
+    middle = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
+    canvas = (10, top, CANVAS_PIXELS / WORLD_SIZE, (0.0, 0.0), WORLD_SIZE)
+    zoom = (CANVAS_PIXELS + 20, top, ZOOM_PX / side,
+            (middle[0] - side / 2, middle[1] - side / 2), side)
+    for left, upper, scale, corner, size in (canvas, zoom):
+        def px(p, left=left, upper=upper, scale=scale, corner=corner, size=size):
+            return QPointF(left + (p[0] - corner[0]) * scale,
+                           upper + (size - (p[1] - corner[1])) * scale)
+        area = QRectF(left, upper, size * scale, size * scale)
+        painter.setClipRect(area)
+        painter.fillRect(area, QColor(*background))
+        widen = max(1.0, min(4.0, scale * WORLD_SIZE / CANVAS_PIXELS))
+        for stroke, look in zip(strokes, looks):
+            colour = QColor(*look[:3]) if len(look) >= 3 else QColor(*DEFAULT_PEN)
+            width = (look[3] if len(look) > 3 else DEFAULT_PEN_WIDTH) * widen
+            painter.setPen(QPen(colour, width, Qt.SolidLine, Qt.RoundCap, Qt.RoundJoin))
+            for a, b in zip(stroke, stroke[1:]):
+                painter.drawLine(px(a), px(b))
+        painter.setClipping(False)
+        painter.setPen(QColor('black'))
+        painter.drawRect(area)
+    _letters_over(painter, letters, zoom)
+    painter.end()
+    image.save(path_png, 'PNG')
+
+
+def _letters_over(painter, letters, view):
+    """Each (label, strokes) thin and dashed, in black under white so it
+    shows on any ink, named at its top left."""
+    left, upper, scale, corner, size = view
+
+    def px(p):
+        return QPointF(left + (p[0] - corner[0]) * scale, upper + (size - (p[1] - corner[1])) * scale)
+    painter.setClipRect(QRectF(left, upper, size * scale, size * scale))
+    for label, strokes in letters:
+        for pen in (QPen(QColor('black'), 3), QPen(QColor('white'), 1.5, Qt.DashLine)):
+            painter.setPen(pen)
+            for stroke in strokes:
+                for a, b in zip(stroke, stroke[1:]):
+                    painter.drawLine(px(a), px(b))
+        corner_px = px((min(x for s in strokes for x, _ in s), max(y for s in strokes for _, y in s)))
+        painter.fillRect(QRectF(corner_px.x(), corner_px.y() - 16, 9 * len(label) + 6, 15),
+                         QColor('white'))
+        painter.setPen(QColor('black'))
+        painter.drawText(QPointF(corner_px.x() + 3, corner_px.y() - 4), label)
+    painter.setClipping(False)

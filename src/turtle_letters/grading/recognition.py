@@ -16,6 +16,7 @@ import string
 from typing import Dict, List, NamedTuple, Optional, Tuple
 
 import numpy
+from scipy.ndimage import distance_transform_edt, maximum_filter
 
 from ..letters.font import FONT
 
@@ -25,6 +26,11 @@ TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a lett
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
 SAMPLE = 0.02       # share of the height between compared points
+CELL = 0.01         # share of the height: the grid distances are measured on
+PAD = 1.0           # share of the height: the distances' grid reaches this far either side
+WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a dash)
+THIN = 0.2          # half the width, share of the height, of an outline's band at most
+HOPELESS = 2 * READABLE     # a candidate straying farther is not fitted exactly: it cannot read
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 
@@ -58,8 +64,68 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('U', [[(0, 1), (0, 0), (0.6, 0), (0.6, 1)]]),
     ('W', [[(0, 1), (0.175, 0), (0.35, 1), (0.525, 0), (0.7, 1)]]),
 ]
-CANDIDATES: List[Tuple[str, List[List[Point]]]] = \
-    [(c, FONT[c].strokes) for c in string.ascii_uppercase] + VARIANTS
+# Hershey families a cadet may draw in (the lab's `font` draws each of
+# them), read as their own glyphs: a script or gothic capital is far from
+# the builtin font's. Families absent (no hershey-fonts-data) are left out.
+# A flourished family's capital has ink almost everywhere in its box (a
+# spiral lies within 0.15 of gothic's O): it must fit more closely.
+FAMILIES = ('futural', 'rowmand', 'rowmant', 'timesr', 'timesi')
+FLOURISHED = ('scripts', 'scriptc', 'cursive', 'gothiceng', 'gothicger', 'gothicita')
+FLOURISHED_READABLE = 0.1
+
+
+def _candidates():
+    """(letter, strokes, the fit it reads within) of every form a letter is read in."""
+    from ..letters.hershey import FontError, load_font
+    found = [(c, FONT[c].strokes, READABLE) for c in string.ascii_uppercase] + \
+        [(c, strokes, READABLE) for c, strokes in VARIANTS]
+    for family in FAMILIES + FLOURISHED:
+        try:
+            font = load_font(family)
+        except (FontError, OSError):
+            continue
+        readable = FLOURISHED_READABLE if family in FLOURISHED else READABLE
+        found += [(c, font.glyph(c).strokes, readable) for c in string.ascii_uppercase]
+    return found
+
+
+class Templates:
+    """Every candidate sampled once, in its own box of height 1 (x from 0):
+    placing one on a drawing's box is then a stretch of its points."""
+
+    def __init__(self, candidates):
+        self.candidates, points, self.aspects, self.starts = candidates, [], [], []
+        for _, strokes, _ in candidates:
+            x0, y0, w0, h0 = box([p for s in strokes for p in s])
+            unit = [[((x - x0) / h0, (y - y0) / h0) for x, y in s] for s in strokes]
+            self.starts.append(len(points))
+            points += samples(unit, CELL / 2)
+            self.aspects.append(w0 / h0)
+        self.points = numpy.array(points)
+        self.owner = numpy.repeat(numpy.arange(len(candidates)),
+                                  numpy.diff(self.starts + [len(points)]))
+        self._chosen = {}
+
+    def of(self, letters):
+        """The indices of the candidates for `letters`, and of their points."""
+        if letters not in self._chosen:
+            chosen = [i for i, (c, _, _) in enumerate(self.candidates) if c in letters]
+            self._chosen[letters] = (numpy.array(chosen, dtype=int),
+                                     numpy.flatnonzero(numpy.isin(self.owner, chosen)))
+        return self._chosen[letters]
+
+
+_templates = []     # made on first use: loading the families takes a moment
+
+
+def templates():
+    if not _templates:
+        _templates.append(Templates(_candidates()))
+    return _templates[0]
+
+
+def candidates():
+    return templates().candidates
 
 
 class Fit(NamedTuple):
@@ -67,6 +133,7 @@ class Fit(NamedTuple):
     fit: float                  # the worst deviation, as a share of the path's height
     strokes: List[List[Point]]  # the candidate on the path's box, m
     tilt: float = 0.0           # degrees counter-clockwise the ink lies off level
+    readable: float = READABLE  # the fit within which this candidate reads
 
 
 class Reading(NamedTuple):
@@ -126,33 +193,80 @@ def thinned(ink, spacing):
     return kept
 
 
-def away(drawn, ideal):
-    """The worse of the two ways apart: how far the point of `drawn` farthest
-    from `ideal` lies from it, and the other way round (arrays of points)."""
-    # nearest found by the product (fast), their distances taken exactly
-    d2 = (drawn ** 2).sum(axis=1)[:, None] + (ideal ** 2).sum(axis=1)[None, :] \
-        - 2 * drawn @ ideal.T
-    to_ideal = numpy.hypot(*(drawn - ideal[d2.argmin(axis=1)]).T).max()
-    to_drawn = numpy.hypot(*(ideal - drawn[d2.argmin(axis=0)]).T).max()
-    return float(max(to_ideal, to_drawn))
+class Distances:
+    """How far each spot of a box of height 1 (and PAD either side of it)
+    lies from some points in it, to a grid of CELL (scipy's Euclidean
+    distance transform). A candidate kept narrower than MAX_STRETCH allows
+    may be wider than the box: PAD holds it."""
+
+    def __init__(self, points, width):
+        self.shape = (int(1 / CELL) + 3, int((width + 2 * PAD) / CELL) + 3)
+        marked = numpy.ones(self.shape, dtype=bool)
+        marked[self.cells(points)] = False
+        self.grid = distance_transform_edt(marked) * CELL
+
+    def cells(self, points):
+        rows = numpy.clip(numpy.rint(points[:, 1] / CELL).astype(int) + 1, 0, self.shape[0] - 1)
+        cols = numpy.clip(numpy.rint((points[:, 0] + PAD) / CELL).astype(int) + 1, 0,
+                          self.shape[1] - 1)
+        return rows, cols
+
+    def of(self, points):
+        return self.grid[self.cells(points)]
 
 
-def _fits(ink, letters):
-    """Each letter's best fit to `ink`, as it lies."""
+class Fitting:
+    """The candidates of some letters on one drawing's box: how far each
+    strays from the ink (a bound, cheap for all of them at once) and its
+    fit (both ways, as read() takes it) for those worth it."""
+
+    def __init__(self, drawn, aspect, letters):
+        t = templates()
+        self.drawn, self.aspect = drawn, aspect
+        self.chosen, indices = t.of(letters)
+        own = numpy.array(t.aspects)[self.chosen]
+        width = numpy.clip(aspect, own / MAX_STRETCH, own * MAX_STRETCH)
+        across = numpy.divide(width, own, out=numpy.zeros_like(own), where=own > 0)
+        slot = numpy.searchsorted(self.chosen, t.owner[indices])   # each point's candidate
+        self.ideal = t.points[indices].copy()
+        self.ideal[:, 0] = ((aspect - width) / 2)[slot] + self.ideal[:, 0] * across[slot]
+        self.starts = numpy.r_[numpy.flatnonzero(numpy.r_[True, slot[1:] != slot[:-1]]),
+                               len(slot)]
+        self.ink = Distances(drawn, aspect)
+
+    def bounds(self):
+        """Each candidate's farthest point from the ink: its fit is no less."""
+        return numpy.maximum.reduceat(self.ink.of(self.ideal), self.starts[:-1])
+
+    def fit(self, i, bound):
+        """Candidate i's fit: the worse of its bound and how far the ink strays from it."""
+        shape = self.ideal[self.starts[i]:self.starts[i + 1]]
+        return max(bound, float(Distances(shape, self.aspect).of(self.drawn).max()))
+
+
+def _fits(ink, letters, beat=None):
+    """Each letter's best fit to `ink`, as it lies; of a letter whose
+    candidates all stray farther than `beat`'s fit of it (or than
+    HOPELESS), the bound only, marked so."""
     points = [p for line in ink for p in line]
-    path_box = box(points)
-    height = path_box[3]
-    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
-    step = max(SAMPLE * height, length / MAX_POINTS)    # at most about 2 x MAX_POINTS
-    drawn = numpy.array(samples([line for line in ink if line], step))
+    x, y, w, h = box(points)
+    if w > WIDEST * h:
+        return {}
+    drawn = (numpy.array(samples([line for line in ink if line], CELL * h / 2)) - (x, y)) / h
+    fitting = Fitting(drawn, w / h, letters)
+    bounds = fitting.bounds()
     fits: Dict[str, Fit] = {}
-    for letter, strokes in CANDIDATES:
-        if letter not in letters:
+    for i in numpy.argsort(bounds):
+        letter, strokes, readable = templates().candidates[fitting.chosen[i]]
+        best = fits[letter].fit if letter in fits else math.inf
+        if bounds[i] >= best:
             continue
-        shape = placed(strokes, path_box)
-        fit = away(drawn, numpy.array(samples(shape, SAMPLE * height))) / height
-        if fit < (fits[letter].fit if letter in fits else math.inf):
-            fits[letter] = Fit(letter, fit, shape)
+        worth = bounds[i] <= HOPELESS and (beat is None or letter not in beat or
+                                           bounds[i] < beat[letter].fit)
+        if worth or letter not in fits:
+            fit = fitting.fit(i, bounds[i]) if worth else float(bounds[i])
+            if fit < best:
+                fits[letter] = Fit(letter, fit, placed(strokes, (x, y, w, h)), 0.0, readable)
     return fits
 
 
@@ -164,6 +278,40 @@ def turned(lines, degrees, centre):
             for line in lines]
 
 
+def outline(ink):
+    """Where `ink` is a letter's outline (a block letter drawn round its
+    edge, or a duplex font's letter of two parallel lines): its closed
+    lines, filled even-odd, make a band nowhere thicker than THIN of the
+    height (nor thinner than a fifth of it), and are most of its ink. The
+    band's middle line, as points (lines of one point each); else None.
+    (A loop drawn as a letter, an O or a D, fills a wide shape: no outline.)"""
+    points = [p for line in ink for p in line]
+    x, y, w, h = box(points)
+    contours = [line for line in ink if len(line) > 3 and math.dist(line[0], line[-1]) <= 0.03 * h]
+    if not contours or h <= 0 or w > WIDEST * h:
+        return None
+    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
+    if sum(math.dist(a, b) for line in contours for a, b in zip(line, line[1:])) < length / 2:
+        return None
+    from PIL import Image, ImageChops, ImageDraw
+    size = (int(w / h / CELL) + 3, int(1 / CELL) + 3)
+    inside = Image.new('1', size, 0)
+    for line in contours:
+        shape = Image.new('1', size, 0)
+        ImageDraw.Draw(shape).polygon([((px - x) / h / CELL + 1, (py - y) / h / CELL + 1)
+                                       for px, py in line], fill=1)
+        inside = ImageChops.logical_xor(inside, shape)
+    band = numpy.array(inside, dtype=bool)
+    depth = distance_transform_edt(band)
+    # a path retraced back to its start closes too, round no band: slivers
+    if not band.any() or not THIN / 5 <= depth.max() * CELL <= THIN:
+        return None
+    ridge = band & (depth >= maximum_filter(depth, size=3))
+    ridge &= depth >= numpy.median(depth[ridge]) / 2      # the spurs to its corners cut short
+    rows, cols = numpy.nonzero(ridge)
+    return [[(x + (c - 1) * CELL * h, y + (r - 1) * CELL * h)] for r, c in zip(rows, cols)]
+
+
 def read(ink, letters=string.ascii_uppercase) -> Reading:
     """The letter of `letters` that `ink` (lines of (x, y), m) draws, best
     fit first; ink that fits no letter well level is tried turned back by
@@ -171,20 +319,22 @@ def read(ink, letters=string.ascii_uppercase) -> Reading:
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
+    ink = outline(ink) or ink       # an outline is read by its middle line
+    points = [p for line in ink for p in line]
     ink = thinned(ink, SAMPLE * box(points)[3] / 2)
     fits = _fits(ink, letters)
-    if min(f.fit for f in fits.values()) > LEVEL:
+    if min((f.fit for f in fits.values()), default=math.inf) > LEVEL:
         x, y, w, h = box(points)
         centre = (x + w / 2, y + h / 2)
         for tilt in TILTS:
-            level = [line for line in turned(ink, -tilt, centre)]
+            level = turned(ink, -tilt, centre)
             if box([p for line in level for p in line])[3] <= 0:
                 continue
-            for letter, fit in _fits(level, letters).items():
-                if fit.fit < fits[letter].fit:
-                    fits[letter] = Fit(letter, fit.fit, turned(fit.strokes, tilt, centre), tilt)
+            for letter, fit in _fits(level, letters, fits).items():
+                if fit.fit < fits.get(letter, fit._replace(fit=math.inf)).fit:
+                    fits[letter] = fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=tilt)
     best = min(fits.values(), key=lambda f: f.fit, default=None)
-    letter = best.letter if best is not None and best.fit <= READABLE else None
+    letter = best.letter if best is not None and best.fit <= best.readable else None
     return Reading(letter, best, fits)
 
 

@@ -66,7 +66,14 @@ def test_every_turtles_ink_counts_each_in_lines_of_its_own():
 
 def test_strokes_join_a_turtles_segments_only_end_to_start():
     lines = [('a', [0, 0, 1, 0]), ('a', [1, 0, 1, 1]), ('a', [2, 2, 3, 3]), ('b', [3, 3, 4, 4])]
-    assert strokes(lines) == [[(0, 0), (1, 0), (1, 1)], [(2, 2), (3, 3)], [(3, 3), (4, 4)]]
+    assert strokes(lines)[0] == [[(0, 0), (1, 0), (1, 1)], [(2, 2), (3, 3)], [(3, 3), (4, 4)]]
+
+
+def test_a_change_of_pen_starts_a_line_of_its_own_look():
+    white, red = [255, 255, 255, 3], [255, 0, 0, 6]
+    lines = [('a', [0, 0, 1, 0, *white]), ('a', [1, 0, 1, 1, *white]), ('a', [1, 1, 2, 1, *red])]
+    assert strokes(lines) == ([[(0, 0), (1, 0), (1, 1)], [(1, 1), (2, 1)]],
+                              [tuple(white), tuple(red)])
 
 
 def test_nodes_posing_as_the_simulator_are_named():

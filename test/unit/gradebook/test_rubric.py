@@ -206,12 +206,11 @@ def test_a_dash_before_the_initials_costs_neither_the_letters_nor_their_accuracy
 
 
 def test_ocr_credits_what_the_strokes_miss_and_the_row_says_both():
-    """A K in Hershey's roman triplex (each stroke drawn three times, with
-    serifs), which no stroke template fits: OCR reads it, and the letter
-    is credited in its words."""
-    from turtle_letters.letters.hershey import load_font
-    ink = [[(1 + x * 2, 3 + y * 2) for x, y in stroke]
-           for stroke in load_font('rowmant').glyph('K').strokes]
+    """DejaVu Serif Bold's K drawn round its edge, serifs and all, which
+    the strokes do not read: OCR reads it, and the letter is credited in
+    its words."""
+    from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
+    ink = [[(1 + x * 2, 3 + y * 2) for x, y in line] for line in outline_glyphs(DEJAVU_BOLD[1])['K']]
     said = scores_of(grade(facts(Drawing(ink, 1.0, 5.0, 90, []), 'K', ocr=True), load(DEFAULT)))
     line = said['The letter drawn is the expected one']
     assert line[0] == 25 and line[1].startswith('drew K, as expected: OCR reads K ('), line

@@ -86,7 +86,7 @@ def _scribble():
 def test_paths_that_are_no_letter(path):
     reading = read([path])
     assert reading.letter is None
-    assert reading.best is None or reading.best.fit > READABLE
+    assert reading.best is None or reading.best.fit > reading.best.readable
 
 
 def test_a_row_of_letters_is_read_left_to_right_by_the_space_between_them():
