@@ -13,7 +13,7 @@ KEYS = {'rospy': 'rospy', 'rosgraph': 'rosgraph', 'actionlib': 'actionlib',
         'geometry_msgs': 'geometry_msgs', 'std_msgs': 'std_msgs', 'std_srvs': 'std_srvs',
         'turtlesim': 'turtlesim', 'actionlib_msgs': 'actionlib_msgs', 'yaml': 'python3-yaml',
         'tqdm': 'python3-tqdm', 'PyQt5': 'python3-pyqt5', 'svgelements': 'python3-svgelements',
-        'numpy': 'python3-numpy', 'tesserocr': 'python3-tesserocr', 'PIL': 'python3-pil',
+        'numpy': 'python3-numpy', 'scipy': 'python3-scipy', 'fontTools': 'python3-fonttools', 'tesserocr': 'python3-tesserocr', 'PIL': 'python3-pil',
         'rospkg': 'python3-rospkg', 'rosgraph_msgs': 'rosgraph_msgs', 'roslib': 'roslib',
         'sensor_msgs': 'sensor_msgs', 'tornado': 'python3-tornado'}
 
