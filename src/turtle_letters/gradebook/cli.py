@@ -144,7 +144,9 @@ def facts_of(student, rubric, place):
         drawing = seen.drawing(run.record, run.events, run.since, rubric.limits.settle,
                                run.finished)
         readings = read_row(drawing.strokes, student.expected) if drawing.strokes else []
-        ocr = read_text(drawing.strokes, student.expected) if drawing.strokes else None
+        # OCR, the slower reader, is asked where the strokes do not read what was expected
+        if drawing.strokes and rubrics.drawn(readings) != student.expected:
+            ocr = read_text(drawing.strokes, student.expected)
     facts = rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
                           drawing, readings, run.stuck, run.limit, seen.own_triggers(run.events),
                           seen.chatter_peak(run.events), run.broken, ocr)

@@ -17,6 +17,8 @@ MAX_DEPTH = 40           # folders within folders a submission may nest
 MAX_ENTRIES = 20000      # files and folders a submission may hold
 MAX_NODES = 20           # executables the grader starts for a package without a launch file
 INCLUDE_DEPTH = 8        # launch files within launch files followed
+DEPENDS = ('depend', 'build_depend', 'build_export_depend', 'exec_depend', 'run_depend',
+           'test_depend')      # package.xml's tags naming a package it needs
 SIMULATOR = 'turtlesim'  # a package of this name is the grader's to run, not the submission's
 
 
@@ -141,8 +143,9 @@ def package_name(folder):
 def find(top) -> Package:
     """The submission's package: of the package.xml under `top`, the one
     whose launch file starts turtlesim and a controller, the shallowest
-    first; its other packages are built beside it, but a second copy of a
-    package and a package named turtlesim, which are left out and noted."""
+    first; the other packages it needs are built beside it; those it does
+    not need, a second copy of a package and a package named turtlesim
+    are left out and noted."""
     problem, special = survey(top)
     if problem:
         return Package('', '', None, problem)
@@ -161,6 +164,8 @@ def find(top) -> Package:
     if not name:
         return Package('', folder, None, f'{os.path.join(folder, "package.xml")} names no package',
                        notes=notes)
+    launch = lab_launch(folder, packages)[1]
+    wanted = needed(name, packages, launch and os.path.join(folder, launch))
     others, kept = [], {name: folder}
     for other, other_name in named:
         where = os.path.relpath(other, top)
@@ -171,11 +176,33 @@ def find(top) -> Package:
         elif other_name in kept:
             notes.append(f'left out {where}: a second package named {other_name} (graded the '
                          f'one in {os.path.relpath(kept[other_name], top)})')
+        elif other_name not in wanted:
+            notes.append(f'left out {where}: {other_name}, which {name} neither depends on nor '
+                         f'launches (not built: its failures cost nothing)')
         else:
             kept[other_name] = other
             others.append(other)
-    launch = lab_launch(folder, packages)[1]
     return Package(name, folder, launch, '', others, notes)
+
+
+def needed(name, packages, launch_file):
+    """The names of `packages` (name: folder) that package `name` needs:
+    those its package.xml depends on, or its launch file starts a node of
+    or includes a file of, and theirs in turn."""
+    wanted, todo = {name}, [name]
+    if launch_file:
+        text = (read_plain(launch_file, MAX_BYTES) or b'').decode('utf-8', 'replace')
+        todo += [pkg for pkg, _ in nodes(launch_file, packages)] + \
+            re.findall(r'\$\(find ([\w-]+)\)', text)
+    while todo:
+        current = todo.pop()
+        if current not in packages:
+            continue
+        wanted.add(current)
+        root = _xml(os.path.join(packages[current], 'package.xml'))
+        todo += [e.text.strip() for e in (root if root is not None else [])
+                 if e.tag in DEPENDS and e.text and e.text.strip() not in wanted]
+    return wanted
 
 
 def _plain_files(folder, depth, enough):

@@ -73,18 +73,29 @@ def test_the_copy_keeps_links_as_links_and_leaves_builds_behind(tmp_path):
     assert os.path.exists(os.path.join(target, 'launch', 'x.launch'))
 
 
-def test_of_several_packages_the_lab_and_the_others_beside_it(tmp_path):
+def test_of_several_packages_the_lab_and_those_it_needs_are_built(tmp_path):
+    """Its messages (a dependency of a dependency) and a package its launch
+    file starts a node of are built beside it; an unrelated sibling (a
+    Gazebo package that does not build here) is left out, in words."""
+    lab = ('<launch><node pkg="turtlesim" type="turtlesim_node" name="sim"/>'
+           '<node pkg="b_talker" type="talker.py" name="t"/></launch>')
     make(tmp_path, {'src/a_msgs/package.xml': PACKAGE.format('a_msgs'),
-                    'src/b_tutorial/package.xml': PACKAGE.format('b_tutorial'),
-                    'src/b_tutorial/launch/t.launch': '<launch><node pkg="x" type="y"/></launch>',
-                    'src/my_lab/package.xml': PACKAGE.format('my_lab'),
-                    'src/my_lab/launch/lab.launch': LAB,
+                    'src/a_common/package.xml':
+                        '<package format="2"><name>a_common</name><depend>a_msgs</depend></package>',
+                    'src/b_talker/package.xml': PACKAGE.format('b_talker'),
+                    'src/c_gazebo/package.xml': PACKAGE.format('c_gazebo'),
+                    'src/c_gazebo/CMakeLists.txt': 'find_package(gazebo REQUIRED)',
+                    'src/my_lab/package.xml': '<package format="2"><name>my_lab</name>'
+                                              '<build_depend>a_common</build_depend></package>',
+                    'src/my_lab/launch/lab.launch': lab,
                     'src/my_lab/inner/package.xml': PACKAGE.format('inner')})
     package = find(str(tmp_path))
     assert package.name == 'my_lab'
-    assert sorted(os.path.basename(f) for f in package.others) == ['a_msgs', 'b_tutorial']
+    assert sorted(os.path.basename(f) for f in package.others) == ['a_common', 'a_msgs', 'b_talker']
+    assert package.notes == ['left out src/c_gazebo: c_gazebo, which my_lab neither depends on '
+                             'nor launches (not built: its failures cost nothing)']
     copy(package, str(tmp_path / 'ws'))
-    assert sorted(os.listdir(tmp_path / 'ws' / 'src')) == ['my_lab', 'other1', 'other2']
+    assert sorted(os.listdir(tmp_path / 'ws' / 'src')) == ['my_lab', 'other1', 'other2', 'other3']
 
 
 def test_a_tree_too_deep_or_too_large_is_refused_in_words(tmp_path):
