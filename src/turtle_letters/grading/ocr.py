@@ -15,7 +15,7 @@ import string
 import threading
 from typing import NamedTuple
 
-from .recognition import box, letters_of, thinned, turned
+from .recognition import box, letters_of, row_tilts, thinned, turned
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
 PAD_PX = 16
@@ -107,16 +107,20 @@ def _read_picture(ink, expected):
 
 def read_text(ink, expected='') -> OcrReading:
     """What Tesseract reads in `ink`, as a row of `expected`'s length: the
-    expected text if any tilt reads it at CONFIDENT or more, else the most
-    confident reading of the ink as it lies."""
+    expected text if its letters read alone (level, or turned back by the
+    row's slope) or the whole at any tilt read it at CONFIDENT or more
+    (CONFIDENT_TURNED turned), else the most confident reading of the ink
+    as it lies."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return OcrReading('', 0.0)
     x, y, w, h = box(points)
     ink = thinned(ink, h / 200)
-    alone = _letter_by_letter(ink, expected)
-    if supports(alone, expected):
-        return alone
+    for slope in row_tilts(ink) if len(expected) > 1 else []:
+        upright = turned(ink, -slope, (x + w / 2, y + h / 2)) if slope else ink
+        alone = _letter_by_letter(upright, expected)._replace(tilt=float(slope))
+        if supports(alone, expected):
+            return alone
     level = None
     for tilt in TILTS:
         upright = turned(ink, -tilt, (x + w / 2, y + h / 2)) if tilt else ink

@@ -23,14 +23,14 @@ from ..letters.font import FONT
 Point = Tuple[float, float]
 LEVEL = 0.03        # a fit this good level is not tried tilted
 TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
+NEAR_TILTS = (-10, -5, 5, 10)   # ... when only finding where to cut a row
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
 SAMPLE = 0.02       # share of the height between compared points
 CELL = 0.01         # share of the height: the grid distances are measured on
-PAD = 1.0           # share of the height: the distances' grid reaches this far either side
 WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a dash)
 THIN = 0.2          # half the width, share of the height, of an outline's band at most
-HOPELESS = 2 * READABLE     # a candidate straying farther is not fitted exactly: it cannot read
+HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 
@@ -99,7 +99,7 @@ class Templates:
             x0, y0, w0, h0 = box([p for s in strokes for p in s])
             unit = [[((x - x0) / h0, (y - y0) / h0) for x, y in s] for s in strokes]
             self.starts.append(len(points))
-            points += samples(unit, CELL / 2)
+            points += samples(unit, CELL)
             self.aspects.append(w0 / h0)
         self.points = numpy.array(points)
         self.owner = numpy.repeat(numpy.arange(len(candidates)),
@@ -107,11 +107,15 @@ class Templates:
         self._chosen = {}
 
     def of(self, letters):
-        """The indices of the candidates for `letters`, and of their points."""
+        """The indices of the candidates for `letters`, of their points,
+        each point's place among them, and where each one's points start
+        (and the last ends)."""
         if letters not in self._chosen:
             chosen = [i for i, (c, _, _) in enumerate(self.candidates) if c in letters]
-            self._chosen[letters] = (numpy.array(chosen, dtype=int),
-                                     numpy.flatnonzero(numpy.isin(self.owner, chosen)))
+            indices = numpy.flatnonzero(numpy.isin(self.owner, chosen))
+            slot = numpy.searchsorted(chosen, self.owner[indices])
+            starts = numpy.r_[numpy.flatnonzero(numpy.r_[True, slot[1:] != slot[:-1]]), len(slot)]
+            self._chosen[letters] = numpy.array(chosen, dtype=int), indices, slot, starts
         return self._chosen[letters]
 
 
@@ -194,20 +198,20 @@ def thinned(ink, spacing):
 
 
 class Distances:
-    """How far each spot of a box of height 1 (and PAD either side of it)
-    lies from some points in it, to a grid of CELL (scipy's Euclidean
-    distance transform). A candidate kept narrower than MAX_STRETCH allows
-    may be wider than the box: PAD holds it."""
+    """How far each spot from x `lo` to `hi` of a box of height 1 lies
+    from some points, to a grid of CELL (scipy's Euclidean distance
+    transform)."""
 
-    def __init__(self, points, width):
-        self.shape = (int(1 / CELL) + 3, int((width + 2 * PAD) / CELL) + 3)
+    def __init__(self, points, lo, hi):
+        self.lo = lo
+        self.shape = (int(1 / CELL) + 3, int((hi - lo) / CELL) + 3)
         marked = numpy.ones(self.shape, dtype=bool)
         marked[self.cells(points)] = False
         self.grid = distance_transform_edt(marked) * CELL
 
     def cells(self, points):
         rows = numpy.clip(numpy.rint(points[:, 1] / CELL).astype(int) + 1, 0, self.shape[0] - 1)
-        cols = numpy.clip(numpy.rint((points[:, 0] + PAD) / CELL).astype(int) + 1, 0,
+        cols = numpy.clip(numpy.rint((points[:, 0] - self.lo) / CELL).astype(int) + 1, 0,
                           self.shape[1] - 1)
         return rows, cols
 
@@ -218,21 +222,21 @@ class Distances:
 class Fitting:
     """The candidates of some letters on one drawing's box: how far each
     strays from the ink (a bound, cheap for all of them at once) and its
-    fit (both ways, as read() takes it) for those worth it."""
+    fit (both ways, as read() takes it) for those worth it. A candidate
+    kept narrower than MAX_STRETCH allows may be wider than the box: the
+    grids reach as far as the widest."""
 
     def __init__(self, drawn, aspect, letters):
         t = templates()
-        self.drawn, self.aspect = drawn, aspect
-        self.chosen, indices = t.of(letters)
+        self.drawn = drawn
+        self.chosen, indices, slot, self.starts = t.of(letters)
         own = numpy.array(t.aspects)[self.chosen]
         width = numpy.clip(aspect, own / MAX_STRETCH, own * MAX_STRETCH)
         across = numpy.divide(width, own, out=numpy.zeros_like(own), where=own > 0)
-        slot = numpy.searchsorted(self.chosen, t.owner[indices])   # each point's candidate
-        self.ideal = t.points[indices].copy()
+        self.ideal = t.points[indices]
         self.ideal[:, 0] = ((aspect - width) / 2)[slot] + self.ideal[:, 0] * across[slot]
-        self.starts = numpy.r_[numpy.flatnonzero(numpy.r_[True, slot[1:] != slot[:-1]]),
-                               len(slot)]
-        self.ink = Distances(drawn, aspect)
+        self.lo, self.hi = min(0.0, (aspect - width.max()) / 2), max(aspect, (aspect + width.max()) / 2)
+        self.ink = Distances(drawn, self.lo, self.hi)
 
     def bounds(self):
         """Each candidate's farthest point from the ink: its fit is no less."""
@@ -241,7 +245,7 @@ class Fitting:
     def fit(self, i, bound):
         """Candidate i's fit: the worse of its bound and how far the ink strays from it."""
         shape = self.ideal[self.starts[i]:self.starts[i + 1]]
-        return max(bound, float(Distances(shape, self.aspect).of(self.drawn).max()))
+        return max(bound, float(Distances(shape, self.lo, self.hi).of(self.drawn).max()))
 
 
 def _fits(ink, letters, beat=None):
@@ -312,7 +316,7 @@ def outline(ink):
     return [[(x + (c - 1) * CELL * h, y + (r - 1) * CELL * h)] for r, c in zip(rows, cols)]
 
 
-def read(ink, letters=string.ascii_uppercase) -> Reading:
+def read(ink, letters=string.ascii_uppercase, tilts=TILTS) -> Reading:
     """The letter of `letters` that `ink` (lines of (x, y), m) draws, best
     fit first; ink that fits no letter well level is tried turned back by
     each of TILTS, and its fits keep the tilt (their strokes turned with it)."""
@@ -326,7 +330,7 @@ def read(ink, letters=string.ascii_uppercase) -> Reading:
     if min((f.fit for f in fits.values()), default=math.inf) > LEVEL:
         x, y, w, h = box(points)
         centre = (x + w / 2, y + h / 2)
-        for tilt in TILTS:
+        for tilt in tilts:
             level = turned(ink, -tilt, centre)
             if box([p for line in level for p in line])[3] <= 0:
                 continue
@@ -403,7 +407,7 @@ def cut(ink, expected):
 
 def _fit_before(ink, left, right, letter):
     part = columns(ink, [left, right])[1]
-    reading = read(part, letter) if part else None
+    reading = read(part, letter, NEAR_TILTS) if part else None
     return reading.best.fit if reading is not None and reading.best is not None else math.inf
 
 
@@ -420,17 +424,61 @@ def letters_of(ink, expected):
     return list(zip(columns(fine, cuts), columns(fine, cuts, SAMPLE * height)))
 
 
+def row_tilts(ink):
+    """Degrees a row of letters may lie off level: 0, and the turn within
+    50 degrees of level, in steps of 5, that leaves the row least high (a
+    row is level where its letters stand side by side)."""
+    points = numpy.array([p for line in ink for p in line])
+    if len(points) < 3:
+        return [0]
+    angles = numpy.radians(numpy.arange(-50, 55, 5))
+    heights = [numpy.ptp(points[:, 1] * math.cos(a) - points[:, 0] * math.sin(a)) for a in angles]
+    slope = int(round(math.degrees(angles[int(numpy.argmin(heights))])))
+    return [0] + ([slope] if slope else [])
+
+
 def read_row(ink, expected='') -> List[Reading]:
     """The letters `ink` draws, left to right: the whole read as one when
     one letter is expected, else each letter set apart by GAP read alone;
     where fewer are set apart than expected, the ink is cut into them, and
     a letter cut is its expected letter if it reads so alone or with the
-    strokes it shares. The cuts only find the letters; a reading of all
-    the letters says what each is."""
+    strokes it shares. A row that does not read so level is read turned
+    back by its slope (row_tilts). The cuts only find the letters; a
+    reading of all the letters says what each is."""
     count = len(expected) if isinstance(expected, str) else expected
     if count <= 1:
         return [read(ink)]
-    if not isinstance(expected, str) or len(apart(ink)) >= count:
+    if not isinstance(expected, str):
+        return [read(group) for group in apart(ink)]
+    points = [p for line in ink for p in line]
+    x, y, w, h = box(points)
+    centre, best = (x + w / 2, y + h / 2), None
+    for tilt in row_tilts(ink):
+        level = turned(ink, -tilt, centre) if tilt else ink
+        readings = [_turned_back(r, tilt, centre) for r in _read_letters(level, expected)]
+        score = (sum(r.letter == e for r, e in zip(readings, expected)),
+                 -sum(r.best.fit for r in readings if r.best is not None))
+        if best is None or score > best[0]:
+            best = score, readings
+        if score[0] == len(expected):
+            break
+    return best[1]
+
+
+def _turned_back(reading, tilt, centre):
+    """A reading of ink turned back by `tilt`, as the ink lies."""
+    if not tilt:
+        return reading
+
+    def back(fit):
+        return fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=fit.tilt + tilt)
+    return Reading(reading.letter, reading.best and back(reading.best),
+                   {c: back(f) for c, f in reading.fits.items()})
+
+
+def _read_letters(ink, expected):
+    """The row's readings, level: set apart, or cut."""
+    if len(apart(ink)) >= len(expected):
         return [read(group) for group in apart(ink)]
     readings = []
     for letter, (alone, shared) in zip(expected, letters_of(ink, expected)):

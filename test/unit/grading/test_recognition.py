@@ -7,11 +7,12 @@ import string
 
 import pytest
 
-from turtle_letters.grading.recognition import (MAX_POINTS, READABLE, apart, read, read_row,
+from turtle_letters.grading.recognition import (MAX_POINTS, apart, outline, read, read_row,
                                                 thinned, turned)
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import placed, retraced, rounded
+from support.glyph_rows import row
 
 SHAPES = [(3.0, 1.0, 5.5, 5.5), (0.5, 1.8, 1.0, 9.0), (2.0, 0.5, 8.0, 1.0)]
 
@@ -142,3 +143,47 @@ def test_thinning_a_dense_letter_keeps_its_reading_and_its_fit():
 def test_m_and_n_drawn_as_zigzags_with_no_upright_leg(letter, zigzag):
     reading = read([placed(retraced([zigzag]), 2.0, 2.0, 2.0)])
     assert reading.letter == letter, reading.best
+
+
+BLOCKS = {   # block capitals drawn round their edge, 3 high, bands 0.6 wide
+    'H': [(0, 0), (0, 3), (0.6, 3), (0.6, 1.8), (1.4, 1.8), (1.4, 3), (2, 3), (2, 0), (1.4, 0),
+          (1.4, 1.2), (0.6, 1.2), (0.6, 0), (0, 0)],
+    'E': [(0, 0), (0, 3), (2, 3), (2, 2.4), (0.6, 2.4), (0.6, 1.8), (1.6, 1.8), (1.6, 1.2),
+          (0.6, 1.2), (0.6, 0.6), (2, 0.6), (2, 0), (0, 0)],
+    'T': [(0, 3), (2, 3), (2, 2.4), (1.3, 2.4), (1.3, 0), (0.7, 0), (0.7, 2.4), (0, 2.4), (0, 3)],
+    'L': [(0, 0), (0, 3), (0.6, 3), (0.6, 0.6), (2, 0.6), (2, 0), (0, 0)],
+}
+
+
+@pytest.mark.parametrize('letter', sorted(BLOCKS))
+def test_an_outline_is_read_by_its_middle_line_and_as_no_other_letter(letter):
+    """Read as strokes, a block H's edges fit an N within 0.12 of its
+    height: an outline is read by the middle of the band it encloses."""
+    for tilt in (0, 30):
+        ink = turned([[(1 + x, 2 + y) for x, y in BLOCKS[letter]]], tilt, (2, 3.5))
+        reading = read(ink)
+        assert reading.letter == letter, (tilt, reading.best)
+
+
+def test_a_loop_drawn_as_a_letter_is_no_outline():
+    ring = [[(3 + math.cos(i / 40 * math.tau), 3 + 1.4 * math.sin(i / 40 * math.tau))
+             for i in range(41)]]
+    assert outline(ring) is None and read(ring).letter == 'O'
+    assert outline([retraced(FONT['A'].strokes)]) is None     # back to its start: no band
+
+
+@pytest.mark.parametrize('family', ['rowmand', 'scripts', 'gothiceng'])
+def test_hershey_families_a_cadet_may_draw_in_read_as_themselves(family):
+    from turtle_letters.letters.hershey import load_font
+    font = load_font(family)
+    for letter in 'AGKMRW':
+        ink = [[(1 + x * 2, 3 + y * 2) for x, y in s] for s in font.glyph(letter).strokes]
+        assert read(ink).letter == letter, (family, letter, read(ink).best)
+
+
+@pytest.mark.parametrize('tilt', [-40, 25, 45])
+def test_a_row_of_touching_letters_tilted_reads_turned_back_by_its_slope(tilt):
+    ink = turned(row('RH', 0.0), tilt, (3.0, 4.0))
+    readings = read_row(ink, 'RH')
+    assert [r.letter for r in readings] == ['R', 'H'], [r.best for r in readings]
+    assert all(abs(r.best.tilt - tilt) <= 10 for r in readings)
