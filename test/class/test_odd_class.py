@@ -1,9 +1,11 @@
 """A class folder as a learning-management system's zip really makes one,
 graded in one run: a tree nested deeper than Python walks, a folder name
 that is not UTF-8, a FIFO, a package handed in twice, a package named
-turtlesim, and a hostile build that prints 1 GB and an error line full of
-terminal codes. Each costs its own row only, says why in words, and the
-grader's own memory stays bounded. Root only, as grading is."""
+turtlesim, a hostile build that prints 1 GB and an error line full of
+terminal codes, three executables and no launch file (one spins turtle1
+for ever), and a workspace with a sibling package that cannot build here.
+Each costs its own row only, says why in words, and the grader's own
+memory stays bounded. Root only, as grading is."""
 import csv
 import os
 import shutil
@@ -16,6 +18,22 @@ from support.grading import leftovers, nest, peak_memory_kb, sandbox_processes, 
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LENA = os.path.join(HERE, 'submissions', 'c03_lena')
+NOAH = os.path.join(HERE, 'submissions', 'c16_noah')
+SPIN = """#!/usr/bin/env python3
+import rospy
+from geometry_msgs.msg import Twist
+rospy.init_node('spin')
+cmd = rospy.Publisher('turtle1/cmd_vel', Twist, queue_size=1)
+turn = Twist()
+turn.linear.x, turn.angular.z = 1.0, 1.5
+while not rospy.is_shutdown():
+    cmd.publish(turn)
+    rospy.sleep(0.05)
+"""
+GAZEBO_WORLD = {'package.xml': '<package format="2"><name>gazebo_world</name>'
+                               '<buildtool_depend>catkin</buildtool_depend></package>',
+                'CMakeLists.txt': 'cmake_minimum_required(VERSION 3.0.2)\nproject(gazebo_world)\n'
+                                  'find_package(catkin REQUIRED COMPONENTS gazebo_ros)\n'}
 PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
 RUBRIC = os.path.join(HERE, 'rubric.yaml')
 MULLER = os.fsdecode(b'o2_M\xfcller')      # "Müller" as a Latin-1 zip names it
@@ -30,6 +48,8 @@ CONCLUSIONS = {
     'o5_turtlesim': ('', 'fail', 'its only package is named turtlesim, as the simulator is'),
     'h7_printer': ('', 'fail', 'catkin_make failed: error:'),
     'o2_M\ufffdller': ('L', 'fail', 'no letter is expected'),
+    'o6_three': ('N', 'pass', 'together, then n_controller.py alone in a fresh world'),
+    'o7_siblings': ('L', 'pass', 'every criterion met'),
 }
 
 
@@ -49,9 +69,20 @@ def graded(tmp_path_factory):
     with open(package_xml, 'w') as f:
         f.write(text)
     shutil.copytree(PRINTER, os.path.join(cls, 'h7_printer'))
+    shutil.copytree(NOAH, os.path.join(cls, 'o6_three'))
+    spin = os.path.join(cls, 'o6_three', 'noah_ws', 'src', 'lab_one', 'scripts', 'spin_forever.py')
+    with open(spin, 'w') as f:
+        f.write(SPIN)
+    os.chmod(spin, 0o755)
+    shutil.copytree(LENA, os.path.join(cls, 'o7_siblings'))
+    for name, text in GAZEBO_WORLD.items():
+        os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
+        with open(os.path.join(cls, 'o7_siblings', 'gazebo_world', name), 'w') as f:
+            f.write(text)
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
-                                     if sid.startswith('o') and sid[1] != '2') +
+                                     if sid.startswith('o') and sid[1] not in '26') +
+        'o6_three,Noah Klein,N\n' +
         'h7_printer,Hugo Stile,P\n')
     before = sandbox_processes()
     try:
@@ -84,6 +115,9 @@ def test_what_was_left_out_is_said_in_the_students_log(graded):
     twice = open(os.path.join(out, 'o4_twice', 'log.txt')).read()
     assert 'left out lab1 (copy): a second package named lab1 (graded the one in lab1)' in twice
     assert os.path.exists(os.path.join(out, 'o2_M%FCller', 'results.json'))
+    siblings = open(os.path.join(out, 'o7_siblings', 'log.txt')).read()
+    assert 'left out gazebo_world: gazebo_world, which lab1 neither depends on nor launches' \
+        in siblings
 
 
 def test_what_the_printer_printed_reaches_no_file_raw_and_the_grader_stays_small(graded):

@@ -63,6 +63,7 @@ class Run:
         self.still_from = None  # where in the terminal's text the wait for a first move began
         self.limit = ''         # the sandbox's limit the submission reached, in words
         self.generated = ''     # the executables the grader started, for want of a launch file
+        self.executables = []   # ... each by name
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
 
@@ -276,12 +277,28 @@ def _refused(result):
 
 
 
-def generated_launch(box, package):
+def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
+    """A TA's next try where a package's executables, started together,
+    drew nothing worth its letter (they fought over one turtle): `name`
+    alone, in a fresh world, on the same build."""
+    result = Run(first.package._replace(launch=None))
+    result.build, result.log = first.build, list(first.log)
+    _launch_and_watch(box, limits, result, only=name)
+    if result.launch is not None:
+        result.launch = Step(False, f'no launch file: the grader started its executables '
+                                    f'({first.generated}) together, then {name} alone in a '
+                                    f'fresh world, as a TA would')
+    return result
+
+
+def generated_launch(box, package, only=None):
     """For a package without a launch file, the one the grader writes: each
     executable of the package (its scripts, and what its build made) started
-    as rosrun would, all in roslaunch's terminal. Its path, and the names."""
+    as rosrun would, all in roslaunch's terminal (or `only` that one). Its
+    path, and the names."""
     built = os.path.join(box.work, 'ws', 'devel', 'lib', package.name)
     names = sorted(set(scripts(package.folder)) | set(scripts(built, 0)))[:MAX_NODES]
+    names = [only] if only else names
     lines = [f'  <node pkg={quoteattr(package.name)} type={quoteattr(name)} '
              f'name="{_node_name(name)}{i}" output="screen"/>\n' for i, name in enumerate(names)]
     # a name of its own: the submission's build could have left a link anywhere in `work`
@@ -297,14 +314,14 @@ def _node_name(executable):
     return stem if stem[:1].isalpha() else f'n_{stem}'
 
 
-def _launch_and_watch(box, limits, result):
+def _launch_and_watch(box, limits, result, only=None):
     work = box.work
     if result.package.launch:
         launch = [result.package.name, os.path.basename(result.package.launch)]
     else:
-        path, names = generated_launch(box, result.package)
+        path, result.executables = generated_launch(box, result.package, only)
         launch = [path]
-        result.generated = ', '.join(names) or 'none'
+        result.generated = ', '.join(result.executables) or 'none'
     world = GradingWorld(box)
     try:
         world.start()

@@ -1,0 +1,55 @@
+"""The class grader's picture of a student's drawing: the ink as turtlesim
+drew it, every turtle's in its own colour and width, on the canvas's own
+colour, and only the letters read drawn over it. Read back pixel by pixel."""
+import os
+
+os.environ.setdefault('QT_QPA_PLATFORM', 'offscreen')
+from PyQt5.QtGui import QColor, QImage  # noqa: E402
+
+from turtle_letters.grading.picture import ZOOM_PX, draw_ink  # noqa: E402
+from turtle_letters.letters.layout import CANVAS_PIXELS, PIXELS_PER_METRE  # noqa: E402
+
+RED, WHITE, GREEN = (255, 0, 0), (255, 255, 255), (0, 128, 0)
+BACKGROUND = (10, 20, 30)
+
+
+def colour_at(image, x, y):
+    return QColor(image.pixel(int(x), int(y))).getRgb()[:3]
+
+
+def test_each_turtles_ink_in_its_colour_and_width_on_the_canvas_colour(tmp_path):
+    path = str(tmp_path / 'drawing.png')
+    strokes = [[(2.0, 2.0), (2.0, 5.0)], [(4.0, 2.0), (4.0, 5.0)]]
+    draw_ink(path, strokes, [(*RED, 3), (*WHITE, 9)], BACKGROUND, [], 'one line')
+    image = QImage(path)
+    top = image.height() - CANVAS_PIXELS - 10        # the caption's lines above the canvas
+
+    def canvas(x, y):     # a point of the world, m, on the left: the canvas as turtlesim shows it
+        return 10 + x * PIXELS_PER_METRE, top + CANVAS_PIXELS - y * PIXELS_PER_METRE
+    assert colour_at(image, *canvas(2.0, 3.5)) == RED
+    assert colour_at(image, *canvas(4.0, 3.5)) == WHITE
+    assert colour_at(image, *canvas(7.0, 7.0)) == BACKGROUND
+    # widths: 9 px reaches 3 px off the line, 3 px does not
+    assert colour_at(image, canvas(4.0, 3.5)[0] + 3, canvas(4.0, 3.5)[1]) == WHITE
+    assert colour_at(image, canvas(2.0, 3.5)[0] + 3, canvas(2.0, 3.5)[1]) == BACKGROUND
+    assert image.width() >= CANVAS_PIXELS + ZOOM_PX
+
+
+def test_only_the_letters_given_are_drawn_over_the_ink(tmp_path):
+    """A letter read is drawn dashed over the enlarged ink; with none
+    read, nothing is drawn there but the ink."""
+    strokes, looks = [[(2.0, 2.0), (2.0, 5.0), (3.5, 2.0)]], [(*GREEN, 3)]
+    bare, read = str(tmp_path / 'bare.png'), str(tmp_path / 'read.png')
+    draw_ink(bare, strokes, looks, BACKGROUND, [], 'nothing read')
+    draw_ink(read, strokes, looks, BACKGROUND, [('L', [[(2.5, 5.0), (2.5, 2.0), (3.5, 2.0)]])],
+             'an L read')
+    a, b = QImage(bare), QImage(read)
+    right_half = range(CANVAS_PIXELS + 25, a.width() - 5)     # inside the enlarged ink's frame
+    differ = sum(a.pixel(x, y) != b.pixel(x, y) for x in right_half[::3] for y in range(0, a.height(), 3))
+    same_left = all(a.pixel(x, y) == b.pixel(x, y) for x in range(10, CANVAS_PIXELS, 7)
+                    for y in range(40, a.height(), 7))
+    assert differ > 50 and same_left
+    def black_in_right(image):
+        return sum(colour_at(image, x, y) == (0, 0, 0) for x in right_half[::2]
+                   for y in range(45, image.height() - 15, 2))
+    assert black_in_right(a) == 0 < black_in_right(b)   # the letter's outline, black under white
