@@ -132,10 +132,10 @@ def facts_of(student, rubric, place):
     """Run the student's submission and say what happened: (facts, run,
     what of the submission was left out)."""
     if student.folder is None:
-        return rubrics.Facts(student.expected, 'no submission', *[None] * 5, []), None, []
+        return rubrics.Facts.never_ran(student.expected, 'no submission'), None, []
     package = submission.find(student.folder)
     if package.problem:
-        return rubrics.Facts(student.expected, package.problem, *[None] * 5, []), None, package.notes
+        return rubrics.Facts.never_ran(student.expected, package.problem), None, package.notes
     with place.sandbox() as box:
         run = session.run(package, rubric.limits, box)
         facts = facts_of_run(student, run, rubric)
@@ -170,9 +170,11 @@ def facts_of_run(student, run, rubric):
         # OCR, the slower reader, is asked where the strokes do not read what was expected
         if drawing.strokes and rubrics.drawn(readings) != student.expected:
             ocr = read_text(drawing.strokes, student.expected)
-    return rubrics.Facts(student.expected, '', run.build, run.launch, run.waited, run.talker,
-                         drawing, readings, run.stuck, run.limit, seen.own_triggers(run.events),
-                         seen.chatter_peak(run.events), run.broken, ocr)
+    return rubrics.Facts(
+        student.expected, build=run.build, launch=run.launch, waited=run.waited,
+        talker=run.talker, drawing=drawing, readings=readings, stuck=run.stuck, limit=run.limit,
+        own_triggers=seen.own_triggers(run.events), chatter_peak=seen.chatter_peak(run.events),
+        broken=run.broken, ocr=ocr)
 
 
 def facts_or_failure(student, rubric, place):
@@ -191,7 +193,7 @@ def facts_or_failure(student, rubric, place):
 def failed(student, error):
     """The facts of a submission the grader itself failed on."""
     problem = f'the grader failed on this submission: {type(error).__name__}: {error}'
-    return rubrics.Facts(student.expected, shown(problem), *[None] * 5, [])
+    return rubrics.Facts.never_ran(student.expected, shown(problem))
 
 
 def grade_student(student: Student, rubric, out, place, warning=''):

@@ -48,19 +48,25 @@ class Rubric(NamedTuple):
 class Facts(NamedTuple):
     """What happened to one submission (Step-like entries: .ok, .says; None: not reached)."""
     expected: str
-    problem: str                    # why it could not even be built ('' if it could)
-    build: object
-    launch: object
-    waited: object
-    talker: object
-    drawing: Optional[Drawing]
-    readings: List[Reading]         # the letters drawn, left to right ([]: no ink)
+    problem: str = ''               # why it could not even be built ('' if it could)
+    build: object = None
+    launch: object = None
+    waited: object = None
+    talker: object = None
+    drawing: Optional[Drawing] = None
+    readings: List[Reading] = []    # the letters drawn, left to right ([]: no ink)
     stuck: str = ''                 # why the turtle never moved after the trigger, if known
     limit: str = ''                 # the sandbox's limit it reached, in words ('' if none)
     own_triggers: List[str] = []    # its nodes that drive the turtle and published "P" too
     chatter_peak: float = 0.0       # the most messages a second on /chatter
     broken: str = ''                # how the grader's master or simulator was broken, if it was
     ocr: Optional[OcrReading] = None    # what OCR reads in the ink (ocr.py), beside `readings`
+
+    @classmethod
+    def never_ran(cls, expected, problem):
+        """A submission that was never run (none handed in, no package, the
+        grader's own failure): why, and nothing observed."""
+        return cls(expected, problem)
 
 
 class Mark(NamedTuple):
