@@ -99,7 +99,7 @@ class Templates:
             x0, y0, w0, h0 = box([p for s in strokes for p in s])
             unit = [[((x - x0) / h0, (y - y0) / h0) for x, y in s] for s in strokes]
             self.starts.append(len(points))
-            points += samples(unit, CELL)
+            points += samples(unit, CELL)     # once, at the start
             self.aspects.append(w0 / h0)
         self.points = numpy.array(points)
         self.owner = numpy.repeat(numpy.arange(len(candidates)),
@@ -107,16 +107,30 @@ class Templates:
         self._chosen = {}
 
     def of(self, letters):
-        """The indices of the candidates for `letters`, of their points,
-        each point's place among them, and where each one's points start
-        (and the last ends)."""
+        """The candidates for `letters`, their points, and the grid rows of those."""
         if letters not in self._chosen:
             chosen = [i for i, (c, _, _) in enumerate(self.candidates) if c in letters]
             indices = numpy.flatnonzero(numpy.isin(self.owner, chosen))
             slot = numpy.searchsorted(chosen, self.owner[indices])
             starts = numpy.r_[numpy.flatnonzero(numpy.r_[True, slot[1:] != slot[:-1]]), len(slot)]
-            self._chosen[letters] = numpy.array(chosen, dtype=int), indices, slot, starts
+            points = self.points[indices]
+            self._chosen[letters] = Choice(numpy.array(chosen, dtype=int), points[:, 0],
+                                           points[:, 1], grid_rows(points[:, 1]), slot, starts)
         return self._chosen[letters]
+
+
+class Choice(NamedTuple):
+    """The candidates of some letters, their points in their own boxes."""
+    chosen: numpy.ndarray   # each candidate's index in Templates.candidates
+    xs: numpy.ndarray       # its points', across, in heights from its left
+    ys: numpy.ndarray       # ... and up, 0 to 1
+    rows: numpy.ndarray     # ... and their rows of a grid of CELL
+    slot: numpy.ndarray     # each point's candidate, 0 to len(chosen) - 1
+    starts: numpy.ndarray   # where each candidate's points start, and the last ends
+
+
+def grid_rows(ys):
+    return numpy.rint(ys / CELL).astype(int) + 1
 
 
 _templates = []     # made on first use: loading the families takes a moment
@@ -163,6 +177,23 @@ def placed(strokes, path_box):
             for s in strokes]
 
 
+def sampled(lines, step):
+    """samples() as an array of (x, y): the same points, made by numpy."""
+    parts = []
+    for line in lines:
+        line = numpy.asarray(line, dtype=float).reshape(-1, 2)
+        if len(line) < 2:
+            parts.append(line)
+            continue
+        a, b = line[:-1], line[1:]
+        counts = numpy.maximum(1, numpy.ceil(numpy.hypot(*(b - a).T) / step)).astype(int)
+        where = numpy.repeat(numpy.arange(len(a)), counts)
+        fraction = (numpy.arange(counts.sum()) - numpy.repeat(numpy.cumsum(counts) - counts,
+                                                              counts) + 1) / counts[where]
+        parts += [line[:1], a[where] + (b[where] - a[where]) * fraction[:, None]]
+    return numpy.concatenate(parts) if parts else numpy.zeros((0, 2))
+
+
 def samples(lines, step):
     """Points along polylines, at most `step` apart."""
     points = []
@@ -202,21 +233,17 @@ class Distances:
     from some points, to a grid of CELL (scipy's Euclidean distance
     transform)."""
 
-    def __init__(self, points, lo, hi):
+    def __init__(self, xs, ys, lo, hi):
         self.lo = lo
-        self.shape = (int(1 / CELL) + 3, int((hi - lo) / CELL) + 3)
-        marked = numpy.ones(self.shape, dtype=bool)
-        marked[self.cells(points)] = False
-        self.grid = distance_transform_edt(marked) * CELL
+        self.grid = numpy.ones((int(1 / CELL) + 3, int((hi - lo) / CELL) + 3), dtype=bool)
+        self.grid[self.rows(ys), self.cols(xs)] = False
+        self.grid = distance_transform_edt(self.grid) * CELL
 
-    def cells(self, points):
-        rows = numpy.clip(numpy.rint(points[:, 1] / CELL).astype(int) + 1, 0, self.shape[0] - 1)
-        cols = numpy.clip(numpy.rint((points[:, 0] - self.lo) / CELL).astype(int) + 1, 0,
-                          self.shape[1] - 1)
-        return rows, cols
+    def rows(self, ys):
+        return numpy.clip(grid_rows(ys), 0, self.grid.shape[0] - 1)
 
-    def of(self, points):
-        return self.grid[self.cells(points)]
+    def cols(self, xs):
+        return numpy.clip(numpy.rint((xs - self.lo) / CELL).astype(int) + 1, 0, self.grid.shape[1] - 1)
 
 
 class Fitting:
@@ -228,24 +255,31 @@ class Fitting:
 
     def __init__(self, drawn, aspect, letters):
         t = templates()
-        self.drawn = drawn
-        self.chosen, indices, slot, self.starts = t.of(letters)
-        own = numpy.array(t.aspects)[self.chosen]
+        self.drawn, self.choice = drawn, t.of(letters)
+        own = numpy.array(t.aspects)[self.choice.chosen]
         width = numpy.clip(aspect, own / MAX_STRETCH, own * MAX_STRETCH)
         across = numpy.divide(width, own, out=numpy.zeros_like(own), where=own > 0)
-        self.ideal = t.points[indices]
-        self.ideal[:, 0] = ((aspect - width) / 2)[slot] + self.ideal[:, 0] * across[slot]
+        slot = self.choice.slot
+        self.xs = ((aspect - width) / 2)[slot] + self.choice.xs * across[slot]
         self.lo, self.hi = min(0.0, (aspect - width.max()) / 2), max(aspect, (aspect + width.max()) / 2)
-        self.ink = Distances(drawn, self.lo, self.hi)
+        self.ink = Distances(drawn[:, 0], drawn[:, 1], self.lo, self.hi)
+
+    @property
+    def chosen(self):
+        return self.choice.chosen
 
     def bounds(self):
         """Each candidate's farthest point from the ink: its fit is no less."""
-        return numpy.maximum.reduceat(self.ink.of(self.ideal), self.starts[:-1])
+        rows = numpy.clip(self.choice.rows, 0, self.ink.grid.shape[0] - 1)
+        return numpy.maximum.reduceat(self.ink.grid[rows, self.ink.cols(self.xs)],
+                                      self.choice.starts[:-1])
 
     def fit(self, i, bound):
         """Candidate i's fit: the worse of its bound and how far the ink strays from it."""
-        shape = self.ideal[self.starts[i]:self.starts[i + 1]]
-        return max(bound, float(Distances(shape, self.lo, self.hi).of(self.drawn).max()))
+        part = slice(self.choice.starts[i], self.choice.starts[i + 1])
+        shape = Distances(self.xs[part], self.choice.ys[part], self.lo, self.hi)
+        return max(bound, float(shape.grid[shape.rows(self.drawn[:, 1]),
+                                           shape.cols(self.drawn[:, 0])].max()))
 
 
 def _fits(ink, letters, beat=None):
@@ -256,7 +290,7 @@ def _fits(ink, letters, beat=None):
     x, y, w, h = box(points)
     if w > WIDEST * h:
         return {}
-    drawn = (numpy.array(samples([line for line in ink if line], CELL * h / 2)) - (x, y)) / h
+    drawn = (sampled([line for line in ink if line], CELL * h / 2) - (x, y)) / h
     fitting = Fitting(drawn, w / h, letters)
     bounds = fitting.bounds()
     fits: Dict[str, Fit] = {}
@@ -394,9 +428,13 @@ def cut(ink, expected):
     x0, _, width, _ = box([p for line in fine for p in line])
     share, cuts, left = width / len(expected), [], x0 - 1e-9     # a part is (left, right]
     for letter in expected[:-1]:
-        options = [left + share * (0.4 + 1.2 * i / 24) for i in range(25)]
+        # every tenth of a share, then the twentieths beside the best of those
+        options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
         options = [x for x in options if x < x0 + width] or [left + share]
         fits = [(_fit_before(fine, left, x, letter), x) for x in options]
+        nearest = min(fits)[1]
+        fits += [(_fit_before(fine, left, x, letter), x)
+                 for x in (nearest - share / 20, nearest + share / 20) if left < x < x0 + width]
         best = min(fit for fit, _ in fits)
         # of the cuts that fit as well (to a hundredth), the one through the least ink
         cuts.append(min((x for fit, x in fits if fit <= best + 0.01),
