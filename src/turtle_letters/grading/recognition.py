@@ -72,6 +72,10 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
 FAMILIES = ('futural', 'rowmand', 'rowmant', 'timesr', 'timesi')
 FLOURISHED = ('scripts', 'scriptc', 'cursive', 'gothiceng', 'gothicger', 'gothicita')
 FLOURISHED_READABLE = 0.1
+# Block letters, read by their middle lines: Liberation's (the recognition
+# benchmark draws DejaVu's, so its figure for outlines is of fonts unseen).
+BLOCK_FONTS = (('/usr/share/fonts/truetype/liberation/LiberationSans-Bold.ttf', READABLE),
+               ('/usr/share/fonts/truetype/liberation/LiberationSerif-Bold.ttf', FLOURISHED_READABLE))
 
 
 def _candidates():
@@ -86,6 +90,23 @@ def _candidates():
             continue
         readable = FLOURISHED_READABLE if family in FLOURISHED else READABLE
         found += [(c, font.glyph(c).strokes, readable) for c in string.ascii_uppercase]
+    return found + _block_letters()
+
+
+def _block_letters():
+    """(letter, middle line, the fit it reads within) of BLOCK_FONTS' bold
+    capitals: an outline is read by its middle line (outline()), and a
+    block letter's middle line is not a pen's letter (serifs, wide joins)."""
+    from ..letters.outlines import outline_glyphs
+    found = []
+    for path, readable in BLOCK_FONTS:
+        try:
+            glyphs = outline_glyphs(path)
+        except (OSError, ImportError):
+            continue
+        for c in string.ascii_uppercase:
+            middle = outline(glyphs[c])
+            found += [(c, middle, readable)] if middle else []
     return found
 
 

@@ -86,9 +86,14 @@ def test_the_wrong_letter_earns_no_accuracy():
 
 
 def test_accuracy_falls_linearly_between_full_and_none():
-    bowed = [(1.0, 3.0), (1.2, 2.0), (1.0, 1.0), (2.2, 1.0)]    # 0.2 m off a 2 m stem: 10%
-    score = scores_of(grade(facts(Drawing([bowed], 1.0, 5.0, 9, [])), load(DEFAULT)))
-    assert score['Its accuracy'][0] == pytest.approx(10, abs=1.5)
+    """A stem bowed 0.2 m off a 2 m L: about 10% off the nearest form of L
+    (any of them), and the points fall linearly from 5% (20) to 15% (0)."""
+    bowed = [(1.0, 3.0), (1.2, 2.0), (1.0, 1.0), (2.2, 1.0)]
+    given = facts(Drawing([bowed], 1.0, 5.0, 9, []))
+    fit = given.readings[0].fits['L'].fit
+    score = scores_of(grade(given, load(DEFAULT)))
+    assert 0.07 < fit < 0.12
+    assert score['Its accuracy'][0] == pytest.approx(20 * (0.15 - fit) / 0.10, abs=0.01)
 
 
 def test_a_limit_of_the_sandbox_fails_the_submission_in_words():
