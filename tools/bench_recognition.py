@@ -123,6 +123,9 @@ def recognition_lines(results):
             f"{'!' if r['worst_s'] > TARGET_WORST_S else ''}")
     lines.append('  read right by both together, by family: ' + ', '.join(
         f'{family} {pct:.0f}%' for family, pct in run['families'].items()))
+    lines.append('  (the strokes reader holds rowmand, rowmant, timesi, scripts, gothiceng and the '
+                 "cadets' forms among its own candidates; rowmans and DejaVu's outlines it has "
+                 'never seen)')
     return lines
 
 
