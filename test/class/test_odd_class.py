@@ -3,7 +3,8 @@ graded in one run: a tree nested deeper than Python walks, a folder name
 that is not UTF-8, a FIFO, a package handed in twice, a package named
 turtlesim, a hostile build that prints 1 GB and an error line full of
 terminal codes, three executables and no launch file (one spins turtle1
-for ever), and a workspace with a sibling package that cannot build here.
+for ever), a workspace with a sibling package that cannot build here, and
+a Python package whose CMakeLists.txt names another project.
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -50,6 +51,7 @@ CONCLUSIONS = {
     'o2_M\ufffdller': ('L', 'fail', 'no letter is expected'),
     'o6_three': ('N', 'pass', 'together, then n_controller.py alone in a fresh world'),
     'o7_siblings': ('L', 'pass', 'every criterion met'),
+    'o8_unbuilt': ('L', 'fail', 'the grader ran its Python nodes unbuilt, from their folder'),
 }
 
 
@@ -57,7 +59,7 @@ CONCLUSIONS = {
 def graded(tmp_path_factory):
     top = tmp_path_factory.mktemp('odd')
     cls, out = str(top / 'class'), str(top / 'out')
-    for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim'):
+    for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim', 'o8_unbuilt'):
         shutil.copytree(LENA, os.path.join(cls, name))
     nest(os.path.join(cls, 'o1_deep', 'lab1'), 1100)
     os.mkfifo(os.path.join(cls, 'o3_fifo', 'lab1', 'scripts', 'pipe'))
@@ -67,6 +69,11 @@ def graded(tmp_path_factory):
     with open(package_xml) as f:
         text = f.read().replace('<name>lab1</name>', '<name>turtlesim</name>')
     with open(package_xml, 'w') as f:
+        f.write(text)
+    cmake = os.path.join(cls, 'o8_unbuilt', 'lab1', 'CMakeLists.txt')
+    with open(cmake) as f:      # a project named otherwise than its package: catkin refuses it
+        text = f.read().replace('project(lab1)', 'project(lab_one)')
+    with open(cmake, 'w') as f:
         f.write(text)
     shutil.copytree(PRINTER, os.path.join(cls, 'h7_printer'))
     shutil.copytree(NOAH, os.path.join(cls, 'o6_three'))

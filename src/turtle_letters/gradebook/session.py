@@ -24,7 +24,7 @@ from .processes import ControllerCpu, JsonLines, Reader
 from .reports import plain
 from .rubric import Limits
 from .sandbox import GiB, Sandbox
-from .submission import MAX_NODES, Package, copy, made_executable, scripts
+from .submission import MAX_NODES, Package, copy, made_executable, python_scripts, scripts
 from .world import GradingWorld, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
@@ -253,8 +253,10 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     result.build, output = build(box, limits)
     result.log.append(('catkin_make', output))
     result.limit = box.reached()
-    if not result.build.ok or result.limit or box.stopped:
+    if result.limit or box.stopped:
         return result
+    if not result.build.ok:
+        return _unbuilt(box, limits, result)
     _launch_and_watch(box, limits, result)
     if _refused(result) and not (result.limit or box.stopped):
         first, refused = result, result.launch.says
@@ -267,6 +269,20 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
         result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
                                     f'the grader made {"them" if len(made) > 1 else "it"} '
                                     f'executable, as a TA would', result.launch.seconds)
+    return result
+
+
+def _unbuilt(box, limits, result):
+    """A TA's fallback for a package whose build failed (its CMakeLists.txt
+    names another project, say) but whose nodes are Python scripts: they
+    are run from their folder, unbuilt, as a TA runs them by hand. Only
+    `builds` is lost for the failure."""
+    if not python_scripts(os.path.join(box.work, 'ws', 'src', result.package.name)):
+        return result
+    failed = result.build
+    _launch_and_watch(box, limits, result, unbuilt=True)
+    result.build = failed._replace(says=f'{failed.says}; the grader ran its Python nodes '
+                                        f'unbuilt, from their folder, as a TA would')
     return result
 
 
@@ -314,7 +330,7 @@ def _node_name(executable):
     return stem if stem[:1].isalpha() else f'n_{stem}'
 
 
-def _launch_and_watch(box, limits, result, only=None):
+def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
     work = box.work
     if result.package.launch:
         launch = [result.package.name, os.path.basename(result.package.launch)]
@@ -326,7 +342,10 @@ def _launch_and_watch(box, limits, result, only=None):
     try:
         world.start()
         # Sourced first: the stand-in's workspace goes before the package's own.
-        command = ['bash', '-c', 'source "$0/ws/devel/setup.bash" && '
+        # Unbuilt, the package is found in its source folder, as rosrun finds scripts.
+        setup = ('export ROS_PACKAGE_PATH="$0/ws/src:$ROS_PACKAGE_PATH"' if unbuilt else
+                 'source "$0/ws/devel/setup.bash"')
+        command = ['bash', '-c', f'{setup} && '
                    'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && shift && '
                    'exec roslaunch "$@"', work, os.path.join(work, 'stand_in')] + launch
         terminal = Terminal(box.inside(command, _env(work, box.master_uri, box.isolated)), box)

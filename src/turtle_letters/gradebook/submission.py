@@ -232,6 +232,15 @@ def scripts(folder, depth=3):
     return sorted({entry.name for entry in _executable(files)})[:MAX_NODES]
 
 
+def python_scripts(folder, depth=3):
+    """The names of the executable scripts in a package's folders whose
+    first line names Python: what a TA can run without a build."""
+    files = _executable(_plain_files(folder, depth, lambda found: False))
+    return sorted({entry.name for entry in files
+                   if b'python' in (read_plain(entry.path, 100) or b'').split(b'\n')[0]
+                   and (read_plain(entry.path, 2) or b'') == b'#!'})[:MAX_NODES]
+
+
 def _executable(entries):
     return [entry for entry in entries if os.access(entry.path, os.X_OK)]
 
