@@ -4,7 +4,7 @@ people draw them, on a corpus made here. No ROS.
 The corpus: capitals of the Hershey families in Debian's hershey-fonts-data
 (roman simplex, duplex and triplex, italic, script, gothic), the outlines
 of DejaVu's bold capitals (fonttools, fonts-dejavu-core), and the rotate-
-and-move forms cadets draw (recognition.VARIANTS); each at a random tilt
+and-move forms cadets draw (forms.VARIANTS); each at a random tilt
 (+-45 degrees), aspect (0.5 to 2), size (0.5 m to the canvas) and place,
 walked at a random speed in turtlesim's 16 ms steps; rows of 2 or 3 letters
 touching or nearly. Each drawing is graded against its own letters, and
@@ -19,7 +19,9 @@ import string
 import time
 
 from turtle_letters.grading.ocr import read_text, supports
-from turtle_letters.grading.recognition import VARIANTS, read_row, turned
+from turtle_letters.grading.forms import VARIANTS
+from turtle_letters.grading.ink import turned
+from turtle_letters.grading.recognition import read_row
 from turtle_letters.letters.hershey import load_font
 from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
 from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs

@@ -28,7 +28,7 @@ PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors'
         'motion.latency',
         'classroom.names',
         'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
-        'grading.recognition', 'grading.ocr', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',
+        'grading.recognition', 'grading.forms', 'grading.ink', 'grading.ocr', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',
         'gradebook.reports', 'gradebook.submission', 'gradebook.failures', 'grading.files',
         'grading.procstat', 'actions.jobs', 'actions.progress', 'viewer.trails', 'viewer.pens', 'viewer.picture',
         'viewer.server'}

@@ -15,7 +15,8 @@ import string
 import threading
 from typing import NamedTuple
 
-from .recognition import box, letters_of, row_tilts, thinned, turned
+from .ink import box, thinned, turned
+from .recognition import letters_of, row_tilts
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
 PAD_PX = 16

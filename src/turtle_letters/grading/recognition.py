@@ -1,8 +1,7 @@
 """Which letter of A-Z a path draws, at any size, place and aspect. No ROS.
 
-Each candidate (the builtin font's glyph, and the ways cadets really draw
-it, VARIANTS) is stretched onto the path's box, its height and width each on
-its own, and the two are compared both ways: how far the path strays from
+Each candidate (each form of a letter, forms.py) is stretched onto the
+path's box, its height and width each on its own, and the two are compared both ways: how far the path strays from
 the candidate's strokes, and how far the strokes are from anything drawn.
 The worse of the two, as a share of the letter's height, is the fit; the
 best-fitting candidate is the letter, if its fit is at most READABLE.
@@ -13,158 +12,21 @@ retraced ink lies on the strokes.
 """
 import math
 import string
-from typing import Dict, List, NamedTuple, Optional, Tuple
+from typing import Dict, List, NamedTuple, Optional
 
 import numpy
-from scipy.ndimage import distance_transform_edt, maximum_filter
+from scipy.ndimage import distance_transform_edt
 
-from ..letters.font import FONT
+from .forms import READABLE, Point, grid_rows, templates
+from .ink import CELL, WIDEST, box, outline, sampled, samples, thinned, turned
 
-Point = Tuple[float, float]
 LEVEL = 0.03        # a fit this good level is not tried tilted
 TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
 NEAR_TILTS = (-10, -5, 5, 10)   # ... when only finding where to cut a row
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
-READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
 SAMPLE = 0.02       # share of the height between compared points
-CELL = 0.01         # share of the height: the grid distances are measured on
-WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a dash)
-THIN = 0.2          # half the width, share of the height, of an outline's band at most
 HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
-MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
-
-_SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
-_SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
-# How cadets draw letters with rotate and move, beside the font's glyphs:
-# square corners, a K's arms meeting at the stem's middle, an A's bar from a
-# quarter to half its height, an N with level feet, M and N as zigzags (a
-# real class's MF), an I of one stroke. A
-# square-cornered O is an O: no D is drawn with four right angles.
-VARIANTS: List[Tuple[str, List[List[Point]]]] = [
-    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
-    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),
-    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.15, 0.5), (0.45, 0.5)]]),
-    ('B', [_SQUARE_P, [(0.6, 0.5), (0.6, 0), (0, 0)]]),
-    ('C', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0)]]),
-    ('G', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0), (0.6, 0.45), (0.3, 0.45)]]),
-    ('I', [[(0, 0), (0, 1)]]),
-    ('J', [[(0.6, 1), (0.6, 0), (0, 0), (0, 0.3)]]),
-    ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
-    ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
-    ('M', [[(0, 0), (0.175, 1), (0.35, 0), (0.525, 1), (0.7, 0)]]),     # a zigzag, no upright
-    ('N', [[(0, 0), (0, 1), (0.6, 0), (0.6, 1)]]),
-    ('N', [[(0, 0), (0.15, 1), (0.45, 0), (0.6, 1)]]),                   # a zigzag
-    ('O', [_SQUARE_O]),
-    ('P', [_SQUARE_P]),
-    ('Q', [_SQUARE_O, [(0.35, 0.3), (0.6, 0)]]),
-    ('R', [_SQUARE_P + [(0.6, 0)]]),
-    ('R', [_SQUARE_P + [(0.3, 0.5), (0.6, 0)]]),
-    ('S', [[(0.6, 1), (0, 1), (0, 0.5), (0.6, 0.5), (0.6, 0), (0, 0)]]),
-    ('U', [[(0, 1), (0, 0), (0.6, 0), (0.6, 1)]]),
-    ('W', [[(0, 1), (0.175, 0), (0.35, 1), (0.525, 0), (0.7, 1)]]),
-]
-# Hershey families a cadet may draw in (the lab's `font` draws each of
-# them), read as their own glyphs: a script or gothic capital is far from
-# the builtin font's. Families absent (no hershey-fonts-data) are left out.
-# A flourished family's capital has ink almost everywhere in its box (a
-# spiral lies within 0.15 of gothic's O): it must fit more closely.
-FAMILIES = ('futural', 'rowmand', 'rowmant', 'timesr', 'timesi')
-FLOURISHED = ('scripts', 'scriptc', 'cursive', 'gothiceng', 'gothicger', 'gothicita')
-FLOURISHED_READABLE = 0.1
-# Block letters, read by their middle lines: Liberation's (the recognition
-# benchmark draws DejaVu's, so its figure for outlines is of fonts unseen).
-BLOCK_FONTS = (('/usr/share/fonts/truetype/liberation/LiberationSans-Bold.ttf', READABLE),
-               ('/usr/share/fonts/truetype/liberation/LiberationSerif-Bold.ttf', FLOURISHED_READABLE))
-
-
-def _candidates():
-    """(letter, strokes, the fit it reads within) of every form a letter is read in."""
-    from ..letters.hershey import FontError, load_font
-    found = [(c, FONT[c].strokes, READABLE) for c in string.ascii_uppercase] + \
-        [(c, strokes, READABLE) for c, strokes in VARIANTS]
-    for family in FAMILIES + FLOURISHED:
-        try:
-            font = load_font(family)
-        except (FontError, OSError):
-            continue
-        readable = FLOURISHED_READABLE if family in FLOURISHED else READABLE
-        found += [(c, font.glyph(c).strokes, readable) for c in string.ascii_uppercase]
-    return found + _block_letters()
-
-
-def _block_letters():
-    """(letter, middle line, the fit it reads within) of BLOCK_FONTS' bold
-    capitals: an outline is read by its middle line (outline()), and a
-    block letter's middle line is not a pen's letter (serifs, wide joins)."""
-    from ..letters.outlines import outline_glyphs
-    found = []
-    for path, readable in BLOCK_FONTS:
-        try:
-            glyphs = outline_glyphs(path)
-        except (OSError, ImportError):
-            continue
-        for c in string.ascii_uppercase:
-            middle = outline(glyphs[c])
-            found += [(c, middle, readable)] if middle else []
-    return found
-
-
-class Templates:
-    """Every candidate sampled once, in its own box of height 1 (x from 0):
-    placing one on a drawing's box is then a stretch of its points."""
-
-    def __init__(self, candidates):
-        self.candidates, points, self.aspects, self.starts = candidates, [], [], []
-        for _, strokes, _ in candidates:
-            x0, y0, w0, h0 = box([p for s in strokes for p in s])
-            unit = [[((x - x0) / h0, (y - y0) / h0) for x, y in s] for s in strokes]
-            self.starts.append(len(points))
-            points += samples(unit, CELL)     # once, at the start
-            self.aspects.append(w0 / h0)
-        self.points = numpy.array(points)
-        self.owner = numpy.repeat(numpy.arange(len(candidates)),
-                                  numpy.diff(self.starts + [len(points)]))
-        self._chosen = {}
-
-    def of(self, letters):
-        """The candidates for `letters`, their points, and the grid rows of those."""
-        if letters not in self._chosen:
-            chosen = [i for i, (c, _, _) in enumerate(self.candidates) if c in letters]
-            indices = numpy.flatnonzero(numpy.isin(self.owner, chosen))
-            slot = numpy.searchsorted(chosen, self.owner[indices])
-            starts = numpy.r_[numpy.flatnonzero(numpy.r_[True, slot[1:] != slot[:-1]]), len(slot)]
-            points = self.points[indices]
-            self._chosen[letters] = Choice(numpy.array(chosen, dtype=int), points[:, 0],
-                                           points[:, 1], grid_rows(points[:, 1]), slot, starts)
-        return self._chosen[letters]
-
-
-class Choice(NamedTuple):
-    """The candidates of some letters, their points in their own boxes."""
-    chosen: numpy.ndarray   # each candidate's index in Templates.candidates
-    xs: numpy.ndarray       # its points', across, in heights from its left
-    ys: numpy.ndarray       # ... and up, 0 to 1
-    rows: numpy.ndarray     # ... and their rows of a grid of CELL
-    slot: numpy.ndarray     # each point's candidate, 0 to len(chosen) - 1
-    starts: numpy.ndarray   # where each candidate's points start, and the last ends
-
-
-def grid_rows(ys):
-    return numpy.rint(ys / CELL).astype(int) + 1
-
-
-_templates = []     # made on first use: loading the families takes a moment
-
-
-def templates():
-    if not _templates:
-        _templates.append(Templates(_candidates()))
-    return _templates[0]
-
-
-def candidates():
-    return templates().candidates
 
 
 class Fit(NamedTuple):
@@ -181,11 +43,6 @@ class Reading(NamedTuple):
     fits: Dict[str, Fit]        # the best fit of each letter
 
 
-def box(points):
-    xs, ys = [p[0] for p in points], [p[1] for p in points]
-    return min(xs), min(ys), max(xs) - min(xs), max(ys) - min(ys)
-
-
 def placed(strokes, path_box):
     """`strokes` stretched onto `path_box`, keeping their width-to-height
     within MAX_STRETCH of their own (a line is not every letter squashed)."""
@@ -196,57 +53,6 @@ def placed(strokes, path_box):
     across = width / w0 if w0 else 0.0      # a candidate of no width (a plain I) stays a line
     return [[(left + (px - x0) * across, y + (py - y0) / h0 * h) for px, py in s]
             for s in strokes]
-
-
-def sampled(lines, step):
-    """samples() as an array of (x, y): the same points, made by numpy."""
-    parts = []
-    for line in lines:
-        line = numpy.asarray(line, dtype=float).reshape(-1, 2)
-        if len(line) < 2:
-            parts.append(line)
-            continue
-        a, b = line[:-1], line[1:]
-        counts = numpy.maximum(1, numpy.ceil(numpy.hypot(*(b - a).T) / step)).astype(int)
-        where = numpy.repeat(numpy.arange(len(a)), counts)
-        fraction = (numpy.arange(counts.sum()) - numpy.repeat(numpy.cumsum(counts) - counts,
-                                                              counts) + 1) / counts[where]
-        parts += [line[:1], a[where] + (b[where] - a[where]) * fraction[:, None]]
-    return numpy.concatenate(parts) if parts else numpy.zeros((0, 2))
-
-
-def samples(lines, step):
-    """Points along polylines, at most `step` apart."""
-    points = []
-    for line in lines:
-        points.append(line[0])
-        for a, b in zip(line, line[1:]):
-            n = max(1, math.ceil(math.dist(a, b) / step))
-            points.extend((a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n)
-                          for i in range(1, n + 1))
-    return points
-
-
-def thinned(ink, spacing):
-    """`ink` with points closer than `spacing` to the one kept before them
-    dropped (each line's ends kept), and at most MAX_POINTS in all: longer
-    ink (a flood of turtles) is thinned more coarsely. A dropped point lies
-    within the spacing of a kept one."""
-    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
-    spacing = max(spacing, length / MAX_POINTS)
-    kept = []
-    for line in ink:
-        if not line:
-            continue
-        points = [line[0]]
-        for p in line[1:-1]:
-            if math.dist(p, points[-1]) >= spacing:
-                points.append(p)
-        kept.append(points + list(line[-1:]) if len(line) > 1 else points)
-    while sum(len(line) for line in kept) > MAX_POINTS:     # many short lines
-        kept = [line[::2] + line[-1:] if len(line) > 2 else line for line in kept]
-        kept = kept[::2] if all(len(line) <= 2 for line in kept) else kept
-    return kept
 
 
 class Distances:
@@ -327,48 +133,6 @@ def _fits(ink, letters, beat=None):
             if fit < best:
                 fits[letter] = Fit(letter, fit, placed(strokes, (x, y, w, h)), 0.0, readable)
     return fits
-
-
-def turned(lines, degrees, centre):
-    """`lines` turned by `degrees` counter-clockwise about `centre`."""
-    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
-    return [[(centre[0] + (x - centre[0]) * c - (y - centre[1]) * s,
-              centre[1] + (x - centre[0]) * s + (y - centre[1]) * c) for x, y in line]
-            for line in lines]
-
-
-def outline(ink):
-    """Where `ink` is a letter's outline (a block letter drawn round its
-    edge, or a duplex font's letter of two parallel lines): its closed
-    lines, filled even-odd, make a band nowhere thicker than THIN of the
-    height (nor thinner than a fifth of it), and are most of its ink. The
-    band's middle line, as points (lines of one point each); else None.
-    (A loop drawn as a letter, an O or a D, fills a wide shape: no outline.)"""
-    points = [p for line in ink for p in line]
-    x, y, w, h = box(points)
-    contours = [line for line in ink if len(line) > 3 and math.dist(line[0], line[-1]) <= 0.03 * h]
-    if not contours or h <= 0 or w > WIDEST * h:
-        return None
-    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
-    if sum(math.dist(a, b) for line in contours for a, b in zip(line, line[1:])) < length / 2:
-        return None
-    from PIL import Image, ImageChops, ImageDraw
-    size = (int(w / h / CELL) + 3, int(1 / CELL) + 3)
-    inside = Image.new('1', size, 0)
-    for line in contours:
-        shape = Image.new('1', size, 0)
-        ImageDraw.Draw(shape).polygon([((px - x) / h / CELL + 1, (py - y) / h / CELL + 1)
-                                       for px, py in line], fill=1)
-        inside = ImageChops.logical_xor(inside, shape)
-    band = numpy.array(inside, dtype=bool)
-    depth = distance_transform_edt(band)
-    # a path retraced back to its start closes too, round no band: slivers
-    if not band.any() or not THIN / 5 <= depth.max() * CELL <= THIN:
-        return None
-    ridge = band & (depth >= maximum_filter(depth, size=3))
-    ridge &= depth >= numpy.median(depth[ridge]) / 2      # the spurs to its corners cut short
-    rows, cols = numpy.nonzero(ridge)
-    return [[(x + (c - 1) * CELL * h, y + (r - 1) * CELL * h)] for r, c in zip(rows, cols)]
 
 
 def read(ink, letters=string.ascii_uppercase, tilts=TILTS) -> Reading:

@@ -4,7 +4,7 @@ for itself. The ink is the builtin font's, placed as a cadet places it."""
 import pytest
 
 from turtle_letters.grading.ocr import CONFIDENT, read_text, supports
-from turtle_letters.grading.recognition import turned
+from turtle_letters.grading.ink import turned
 
 from support.glyph_rows import row
 

@@ -1,0 +1,146 @@
+"""The forms each letter of A-Z is read in: the builtin font's glyph, the
+ways cadets draw it with rotate and move, the Hershey families a cadet may
+draw in, and block letters by their middle lines; each sampled once in its
+own box (Templates), for recognition.py to stretch onto ink. No ROS here."""
+import string
+from typing import List, NamedTuple, Tuple
+
+import numpy
+
+from ..letters.font import FONT
+from .ink import CELL, box, outline, samples
+
+Point = Tuple[float, float]
+READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
+
+_SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
+_SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
+# How cadets draw letters with rotate and move, beside the font's glyphs:
+# square corners, a K's arms meeting at the stem's middle, an A's bar from a
+# quarter to half its height, an N with level feet, M and N as zigzags (a
+# real class's MF), an I of one stroke. A
+# square-cornered O is an O: no D is drawn with four right angles.
+VARIANTS: List[Tuple[str, List[List[Point]]]] = [
+    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
+    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),
+    ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.15, 0.5), (0.45, 0.5)]]),
+    ('B', [_SQUARE_P, [(0.6, 0.5), (0.6, 0), (0, 0)]]),
+    ('C', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0)]]),
+    ('G', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0), (0.6, 0.45), (0.3, 0.45)]]),
+    ('I', [[(0, 0), (0, 1)]]),
+    ('J', [[(0.6, 1), (0.6, 0), (0, 0), (0, 0.3)]]),
+    ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
+    ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
+    ('M', [[(0, 0), (0.175, 1), (0.35, 0), (0.525, 1), (0.7, 0)]]),     # a zigzag, no upright
+    ('N', [[(0, 0), (0, 1), (0.6, 0), (0.6, 1)]]),
+    ('N', [[(0, 0), (0.15, 1), (0.45, 0), (0.6, 1)]]),                   # a zigzag
+    ('O', [_SQUARE_O]),
+    ('P', [_SQUARE_P]),
+    ('Q', [_SQUARE_O, [(0.35, 0.3), (0.6, 0)]]),
+    ('R', [_SQUARE_P + [(0.6, 0)]]),
+    ('R', [_SQUARE_P + [(0.3, 0.5), (0.6, 0)]]),
+    ('S', [[(0.6, 1), (0, 1), (0, 0.5), (0.6, 0.5), (0.6, 0), (0, 0)]]),
+    ('U', [[(0, 1), (0, 0), (0.6, 0), (0.6, 1)]]),
+    ('W', [[(0, 1), (0.175, 0), (0.35, 1), (0.525, 0), (0.7, 1)]]),
+]
+# Hershey families a cadet may draw in (the lab's `font` draws each of
+# them), read as their own glyphs: a script or gothic capital is far from
+# the builtin font's. Families absent (no hershey-fonts-data) are left out.
+# A flourished family's capital has ink almost everywhere in its box (a
+# spiral lies within 0.15 of gothic's O): it must fit more closely.
+FAMILIES = ('futural', 'rowmand', 'rowmant', 'timesr', 'timesi')
+FLOURISHED = ('scripts', 'scriptc', 'cursive', 'gothiceng', 'gothicger', 'gothicita')
+FLOURISHED_READABLE = 0.1
+# Block letters, read by their middle lines: Liberation's (the recognition
+# benchmark draws DejaVu's, so its figure for outlines is of fonts unseen).
+BLOCK_FONTS = (('/usr/share/fonts/truetype/liberation/LiberationSans-Bold.ttf', READABLE),
+               ('/usr/share/fonts/truetype/liberation/LiberationSerif-Bold.ttf', FLOURISHED_READABLE))
+
+
+def _candidates():
+    """(letter, strokes, the fit it reads within) of every form a letter is read in."""
+    from ..letters.hershey import FontError, load_font
+    found = [(c, FONT[c].strokes, READABLE) for c in string.ascii_uppercase] + \
+        [(c, strokes, READABLE) for c, strokes in VARIANTS]
+    for family in FAMILIES + FLOURISHED:
+        try:
+            font = load_font(family)
+        except (FontError, OSError):
+            continue
+        readable = FLOURISHED_READABLE if family in FLOURISHED else READABLE
+        found += [(c, font.glyph(c).strokes, readable) for c in string.ascii_uppercase]
+    return found + _block_letters()
+
+
+def _block_letters():
+    """(letter, middle line, the fit it reads within) of BLOCK_FONTS' bold
+    capitals: an outline is read by its middle line (outline()), and a
+    block letter's middle line is not a pen's letter (serifs, wide joins)."""
+    from ..letters.outlines import outline_glyphs
+    found = []
+    for path, readable in BLOCK_FONTS:
+        try:
+            glyphs = outline_glyphs(path)
+        except (OSError, ImportError):
+            continue
+        for c in string.ascii_uppercase:
+            middle = outline(glyphs[c])
+            found += [(c, middle, readable)] if middle else []
+    return found
+
+
+class Templates:
+    """Every candidate sampled once, in its own box of height 1 (x from 0):
+    placing one on a drawing's box is then a stretch of its points."""
+
+    def __init__(self, candidates):
+        self.candidates, points, self.aspects, self.starts = candidates, [], [], []
+        for _, strokes, _ in candidates:
+            x0, y0, w0, h0 = box([p for s in strokes for p in s])
+            unit = [[((x - x0) / h0, (y - y0) / h0) for x, y in s] for s in strokes]
+            self.starts.append(len(points))
+            points += samples(unit, CELL)     # once, at the start
+            self.aspects.append(w0 / h0)
+        self.points = numpy.array(points)
+        self.owner = numpy.repeat(numpy.arange(len(candidates)),
+                                  numpy.diff(self.starts + [len(points)]))
+        self._chosen = {}
+
+    def of(self, letters):
+        """The candidates for `letters`, their points, and the grid rows of those."""
+        if letters not in self._chosen:
+            chosen = [i for i, (c, _, _) in enumerate(self.candidates) if c in letters]
+            indices = numpy.flatnonzero(numpy.isin(self.owner, chosen))
+            slot = numpy.searchsorted(chosen, self.owner[indices])
+            starts = numpy.r_[numpy.flatnonzero(numpy.r_[True, slot[1:] != slot[:-1]]), len(slot)]
+            points = self.points[indices]
+            self._chosen[letters] = Choice(numpy.array(chosen, dtype=int), points[:, 0],
+                                           points[:, 1], grid_rows(points[:, 1]), slot, starts)
+        return self._chosen[letters]
+
+
+class Choice(NamedTuple):
+    """The candidates of some letters, their points in their own boxes."""
+    chosen: numpy.ndarray   # each candidate's index in Templates.candidates
+    xs: numpy.ndarray       # its points', across, in heights from its left
+    ys: numpy.ndarray       # ... and up, 0 to 1
+    rows: numpy.ndarray     # ... and their rows of a grid of CELL
+    slot: numpy.ndarray     # each point's candidate, 0 to len(chosen) - 1
+    starts: numpy.ndarray   # where each candidate's points start, and the last ends
+
+
+def grid_rows(ys):
+    return numpy.rint(ys / CELL).astype(int) + 1
+
+
+_templates = []     # made on first use: loading the families takes a moment
+
+
+def templates():
+    if not _templates:
+        _templates.append(Templates(_candidates()))
+    return _templates[0]
+
+
+def candidates():
+    return templates().candidates

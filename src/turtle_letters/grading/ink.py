@@ -1,0 +1,110 @@
+"""Ink as the grader reads it: unbroken lines of (x, y), m. Its box,
+points along it, thinned to a bounded count, turned, and, for a letter
+drawn round its edge, its middle line. No ROS here."""
+import math
+
+import numpy
+from scipy.ndimage import distance_transform_edt, maximum_filter
+
+CELL = 0.01         # share of the height: the grid distances are measured on
+WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a dash)
+THIN = 0.2          # half the width, share of the height, of an outline's band at most
+MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
+
+
+def box(points):
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    return min(xs), min(ys), max(xs) - min(xs), max(ys) - min(ys)
+
+
+def sampled(lines, step):
+    """samples() as an array of (x, y): the same points, made by numpy."""
+    parts = []
+    for line in lines:
+        line = numpy.asarray(line, dtype=float).reshape(-1, 2)
+        if len(line) < 2:
+            parts.append(line)
+            continue
+        a, b = line[:-1], line[1:]
+        counts = numpy.maximum(1, numpy.ceil(numpy.hypot(*(b - a).T) / step)).astype(int)
+        where = numpy.repeat(numpy.arange(len(a)), counts)
+        fraction = (numpy.arange(counts.sum()) - numpy.repeat(numpy.cumsum(counts) - counts,
+                                                              counts) + 1) / counts[where]
+        parts += [line[:1], a[where] + (b[where] - a[where]) * fraction[:, None]]
+    return numpy.concatenate(parts) if parts else numpy.zeros((0, 2))
+
+
+def samples(lines, step):
+    """Points along polylines, at most `step` apart."""
+    points = []
+    for line in lines:
+        points.append(line[0])
+        for a, b in zip(line, line[1:]):
+            n = max(1, math.ceil(math.dist(a, b) / step))
+            points.extend((a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n)
+                          for i in range(1, n + 1))
+    return points
+
+
+def thinned(ink, spacing):
+    """`ink` with points closer than `spacing` to the one kept before them
+    dropped (each line's ends kept), and at most MAX_POINTS in all: longer
+    ink (a flood of turtles) is thinned more coarsely. A dropped point lies
+    within the spacing of a kept one."""
+    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
+    spacing = max(spacing, length / MAX_POINTS)
+    kept = []
+    for line in ink:
+        if not line:
+            continue
+        points = [line[0]]
+        for p in line[1:-1]:
+            if math.dist(p, points[-1]) >= spacing:
+                points.append(p)
+        kept.append(points + list(line[-1:]) if len(line) > 1 else points)
+    while sum(len(line) for line in kept) > MAX_POINTS:     # many short lines
+        kept = [line[::2] + line[-1:] if len(line) > 2 else line for line in kept]
+        kept = kept[::2] if all(len(line) <= 2 for line in kept) else kept
+    return kept
+
+
+def turned(lines, degrees, centre):
+    """`lines` turned by `degrees` counter-clockwise about `centre`."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return [[(centre[0] + (x - centre[0]) * c - (y - centre[1]) * s,
+              centre[1] + (x - centre[0]) * s + (y - centre[1]) * c) for x, y in line]
+            for line in lines]
+
+
+def outline(ink):
+    """Where `ink` is a letter's outline (a block letter drawn round its
+    edge, or a duplex font's letter of two parallel lines): its closed
+    lines, filled even-odd, make a band nowhere thicker than THIN of the
+    height (nor thinner than a fifth of it), and are most of its ink. The
+    band's middle line, as points (lines of one point each); else None.
+    (A loop drawn as a letter, an O or a D, fills a wide shape: no outline.)"""
+    points = [p for line in ink for p in line]
+    x, y, w, h = box(points)
+    contours = [line for line in ink if len(line) > 3 and math.dist(line[0], line[-1]) <= 0.03 * h]
+    if not contours or h <= 0 or w > WIDEST * h:
+        return None
+    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
+    if sum(math.dist(a, b) for line in contours for a, b in zip(line, line[1:])) < length / 2:
+        return None
+    from PIL import Image, ImageChops, ImageDraw
+    size = (int(w / h / CELL) + 3, int(1 / CELL) + 3)
+    inside = Image.new('1', size, 0)
+    for line in contours:
+        shape = Image.new('1', size, 0)
+        ImageDraw.Draw(shape).polygon([((px - x) / h / CELL + 1, (py - y) / h / CELL + 1)
+                                       for px, py in line], fill=1)
+        inside = ImageChops.logical_xor(inside, shape)
+    band = numpy.array(inside, dtype=bool)
+    depth = distance_transform_edt(band)
+    # a path retraced back to its start closes too, round no band: slivers
+    if not band.any() or not THIN / 5 <= depth.max() * CELL <= THIN:
+        return None
+    ridge = band & (depth >= maximum_filter(depth, size=3))
+    ridge &= depth >= numpy.median(depth[ridge]) / 2      # the spurs to its corners cut short
+    rows, cols = numpy.nonzero(ridge)
+    return [[(x + (c - 1) * CELL * h, y + (r - 1) * CELL * h)] for r, c in zip(rows, cols)]
