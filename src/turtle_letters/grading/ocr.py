@@ -11,6 +11,7 @@ kept, else the reading level. (Turned, a J read as an S at 86%: what
 reads as something else level is not turned until it reads as hoped.)
 """
 import math
+import os
 import string
 import threading
 from typing import NamedTuple
@@ -26,6 +27,9 @@ TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by 
 CLOSED = 0.03          # share of the height within which a line's ends meet: a contour
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
 _apis = threading.local()       # Tesseract's handles are not shared between threads
+# Tesseract's OpenMP would take every core while it reads: the grader reads
+# one student's ink while another's timed controller draws on the other core.
+os.environ.setdefault('OMP_THREAD_LIMIT', '1')
 
 
 class OcrReading(NamedTuple):
