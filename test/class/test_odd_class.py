@@ -51,7 +51,7 @@ CONCLUSIONS = {
     'o2_M\ufffdller': ('L', 'fail', 'no letter is expected'),
     'o6_three': ('N', 'pass', 'together, then n_controller.py alone in a fresh world'),
     'o7_siblings': ('L', 'pass', 'every criterion met'),
-    'o8_unbuilt': ('L', 'fail', 'the grader ran its Python nodes unbuilt, from their folder'),
+    'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
 }
 
 

@@ -5,6 +5,7 @@ simulator (world.py), P and Enter typed for its talker, and the drawing
 watched from the launch on, until every turtle stands still. What happened
 is a Run, for the rubric to score; nothing here decides points.
 """
+import itertools
 import math
 import os
 import pty
@@ -118,9 +119,8 @@ def build(box, limits):
         return Step(False, f'the build was stopped: {limit}' if limit else
                     f'the build did not end within {limits.build:g} s'), text
     if process.returncode != 0:
-        first = next((line.strip() for line in text.splitlines()
-                      if 'error' in line.lower() and 'Error ' not in line), 'see log.txt')
-        return Step(False, f'catkin_make failed: {first}', time.monotonic() - started), text
+        return Step(False, f'catkin_make failed: {first_error(text)}',
+                    time.monotonic() - started), text
     return Step(True, f'built in {time.monotonic() - started:.1f} s',
                 time.monotonic() - started), text
 
@@ -228,6 +228,21 @@ class Watcher:
         self.errors.close()
         shutil.rmtree(self.home, ignore_errors=True)
         return said
+
+
+def first_error(text):
+    """The build's first error, in its own words: a compiler's line, or
+    CMake's message under its "CMake Error at" line (make's "Error 2" is
+    only its echo)."""
+    lines = text.splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith('CMake Error'):
+            message = ' '.join(m.strip() for m in itertools.takewhile(
+                lambda m: m.startswith(' ') or not m, lines[i + 1:i + 6]) if m.strip())
+            return f'{line.strip()} {message}'.strip()
+        if 'error' in line.lower() and 'Error ' not in line:
+            return line.strip()
+    return 'see log.txt'
 
 
 def wait_until(condition, seconds, alive=lambda: True):

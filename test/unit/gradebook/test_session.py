@@ -5,7 +5,7 @@ from types import SimpleNamespace
 
 import pytest
 
-from turtle_letters.gradebook.session import watching
+from turtle_letters.gradebook.session import first_error, watching
 
 
 def parts(**changed):
@@ -27,3 +27,22 @@ def test_a_run_in_order_is_watched():
                                     dict(record_full=True), dict(broken='shut down')])
 def test_each_reason_alone_ends_the_watch(reason):
     assert not watching(*parts(**reason))
+
+
+def test_a_failed_build_says_its_first_error_in_its_own_words():
+    """A compiler's error line; CMake's message under "CMake Error at"
+    (catkin refusing a project named otherwise than its package), not the
+    "Configuring incomplete" that follows it, nor make's "Error 2"."""
+    cmake = ("-- Using CATKIN_DEVEL_PREFIX\n"
+             "CMake Error at /usr/share/catkin/cmake/catkin_package_xml.cmake:54 (message):\n"
+             "  'ws/src/lab1/package.xml' does not match current PROJECT_NAME\n"
+             "  'lab_one'.  You must call project() with the same name.\n"
+             "Call Stack (most recent call first):\n"
+             "  CMakeLists.txt:4 (catkin_package)\n\n"
+             "-- Configuring incomplete, errors occurred!\n")
+    assert first_error(cmake).endswith("(message): 'ws/src/lab1/package.xml' does not match "
+                                       "current PROJECT_NAME 'lab_one'.  You must call project() "
+                                       "with the same name.")
+    gcc = "make[2]: *** [x] Error 1\nsrc/main.cpp:58:27: error: no matching function\n"
+    assert first_error(gcc) == 'src/main.cpp:58:27: error: no matching function'
+    assert first_error('nothing useful\n') == 'see log.txt'
