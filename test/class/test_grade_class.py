@@ -29,7 +29,9 @@ CONCLUSIONS = {
     'c02_kofi': ('K', 'K', 'pass', ''),
     'c03_lena': ('L', 'L', 'pass', 'every criterion met'),
     'c04_maria': ('M', 'N', 'fail', 'drew N, expected M'),
-    'c05_omar': ('O', '', 'fail', "It builds: catkin_make failed"),
+    # his CMakeLists.txt names turtle_sim: his Python nodes run unbuilt, as a TA
+    # would run them, and draw the lab's N
+    'c05_omar': ('O', 'N', 'fail', "It builds: catkin_make failed"),
     # a misspelt type in his launch file: his executables run instead, as a TA would
     'c06_pavel': ('P', 'N', 'fail', 'Cannot locate node of type [controler.py]'),
     'c07_quinn': ('Q', 'O', 'fail', 'drew O, expected Q'),
