@@ -12,15 +12,17 @@ against another letter or row (a wrong letter credited is the figure that
 must stay 0). Figures for the strokes' reader, OCR, and the two combined
 as the grader combines them.
 """
+import argparse
 import math
+import multiprocessing
 import random
 import statistics
 import string
 import time
 
-from turtle_letters.grading.ocr import read_text, supports
 from turtle_letters.grading.forms import VARIANTS
 from turtle_letters.grading.ink import turned
+from turtle_letters.grading.ocr import read_text, supports
 from turtle_letters.grading.recognition import read_row
 from turtle_letters.letters.hershey import load_font
 from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
@@ -82,29 +84,48 @@ def readers(ink, expected):
     return strokes, ocr, middle - started, time.monotonic() - middle
 
 
-def recognition_run(singles=2000, rows=500, seed=1):
-    rng, fonts = random.Random(seed), corpus_fonts()
+_fonts = []     # each worker's corpus fonts, loaded once
+
+
+def one_drawing(job):
+    """Drawing n of the corpus (its own random stream, whatever the
+    workers), read against its own text and against another: (family,
+    the text it was wrong against, and each reader's right, wrong and
+    seconds)."""
+    n, singles, seed = job
+    if not _fonts:
+        _fonts.extend(corpus_fonts())
+    rng = random.Random(seed * 1000003 + n)
+    family, glyphs = _fonts[n % len(_fonts)]
+    letters = sorted(glyphs)
+    text = ''.join(rng.choice(letters) for _ in range(1 if n < singles else rng.choice((2, 3))))
+    other = text
+    while other == text:
+        other = ''.join(rng.choice(string.ascii_uppercase) for _ in text)
+    ink = drawn(glyphs, text, rng)
+    s, o, s_time, o_time = readers(ink, text)
+    ws, wo, _, _ = readers(ink, other)
+    return family, f'{text} as {other}', {
+        'strokes': (s, ws, s_time), 'ocr': (o, wo, o_time),
+        'both': (s or o, ws or wo, s_time + (0.0 if s else o_time))}
+
+
+def recognition_run(singles=2000, rows=500, seed=1, jobs=1):
+    """The corpus read, `jobs` drawings at a time (each reader's time is
+    measured while the others read too)."""
     tally = {name: dict(right=0, wrong=0, seconds=[]) for name in ('strokes', 'ocr', 'both')}
-    by_family = {}
-    for n in range(singles + rows):
-        family, glyphs = fonts[n % len(fonts)]
-        letters = sorted(glyphs)
-        text = ''.join(rng.choice(letters) for _ in range(1 if n < singles else rng.choice((2, 3))))
-        other = text
-        while other == text:
-            other = ''.join(rng.choice(string.ascii_uppercase) for _ in text)
-        ink = drawn(glyphs, text, rng)
-        s, o, s_time, o_time = readers(ink, text)
-        ws, wo, _, _ = readers(ink, other)
-        for name, right, wrong, seconds in (('strokes', s, ws, s_time), ('ocr', o, wo, o_time),
-                                            ('both', s or o, ws or wo,
-                                             s_time + (0.0 if s else o_time))):
-            tally[name]['right'] += right
-            tally[name]['wrong'] += wrong
-            tally[name]['seconds'].append(seconds)
-        by_family.setdefault(family, []).append(s or o)
+    by_family, wrongs = {}, []
+    work = [(n, singles, seed) for n in range(singles + rows)]
+    with multiprocessing.Pool(jobs) as pool:
+        for family, texts, results in pool.imap(one_drawing, work, chunksize=8):
+            for name, (right, wrong, seconds) in results.items():
+                tally[name]['right'] += right
+                tally[name]['wrong'] += wrong
+                tally[name]['seconds'].append(seconds)
+            wrongs += [f'{family} {texts}'] if results['both'][1] else []
+            by_family.setdefault(family, []).append(results['both'][0])
     total = singles + rows
-    return dict(singles=singles, rows=rows, readers={
+    return dict(singles=singles, rows=rows, wrongs=wrongs, readers={
         name: dict(right_pct=100 * t['right'] / total, wrong_pct=100 * t['wrong'] / total,
                    median_s=statistics.median(t['seconds']), worst_s=max(t['seconds']))
         for name, t in tally.items()},
@@ -125,6 +146,7 @@ def recognition_lines(results):
             f"{'!' if r['worst_s'] > TARGET_WORST_S else ''}")
     lines.append('  read right by both together, by family: ' + ', '.join(
         f'{family} {pct:.0f}%' for family, pct in run['families'].items()))
+    lines += [f'  wrong letter credited: {wrong}' for wrong in run.get('wrongs', [])]
     lines.append('  (the strokes reader holds rowmand, rowmant, timesi, scripts, gothiceng and the '
                  "cadets' forms among its own candidates; rowmans and DejaVu's outlines it has "
                  'never seen)')
@@ -132,7 +154,11 @@ def recognition_lines(results):
 
 
 if __name__ == '__main__':
-    import sys
-    singles, rows = (int(a) for a in sys.argv[1:3]) if len(sys.argv) > 2 else (2000, 500)
-    for line in recognition_lines({'recognition': recognition_run(singles, rows)}):
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('singles', type=int, nargs='?', default=2000)
+    parser.add_argument('rows', type=int, nargs='?', default=500)
+    parser.add_argument('--jobs', type=int, default=1, help='drawings read at a time')
+    args = parser.parse_args()
+    for line in recognition_lines({'recognition': recognition_run(args.singles, args.rows,
+                                                                  jobs=args.jobs)}):
         print(line)
