@@ -328,7 +328,8 @@ def generated_launch(box, package, only=None):
     as rosrun would, all in roslaunch's terminal (or `only` that one). Its
     path, and the names."""
     built = os.path.join(box.work, 'ws', 'devel', 'lib', package.name)
-    names = sorted(set(scripts(package.folder)) | set(scripts(built, 0)))[:MAX_NODES]
+    copied = os.path.join(box.work, 'ws', 'src', package.name)     # its scripts made executable
+    names = sorted(set(scripts(copied)) | set(scripts(built, 0)))[:MAX_NODES]
     names = [only] if only else names
     lines = [f'  <node pkg={quoteattr(package.name)} type={quoteattr(name)} '
              f'name="{_node_name(name)}{i}" output="screen"/>\n' for i, name in enumerate(names)]

@@ -88,20 +88,20 @@ def _api(mode):
 
 def _read_picture(ink, expected):
     """(text, confidence) of the picture of `ink`, read as a word, then as
-    a line of letters or one letter, then (ink with contours) filled as a
-    word: the first reading of `expected` at CONFIDENT or more, else the
-    word's reading. (Each reads some drawings the others miss: a real
+    a line of letters or one letter, then (ink with contours) filled, the
+    same two ways: the first reading of `expected` at CONFIDENT or more,
+    else the word's reading. (Each reads some drawings the others miss: a real
     class's ZA, the Z's foot run into the A, read as a word gave ZA at 93%,
     as a line A, as a letter LZ; DejaVu's outlines read 6 and 9 of 26 as
     lines, 21 and 22 filled.)"""
-    pictures = [(picture(ink), 'SINGLE_WORD'),
-                (None, 'SINGLE_CHAR' if len(expected) == 1 else 'SINGLE_LINE')]
+    modes = ('SINGLE_WORD', 'SINGLE_CHAR' if len(expected) == 1 else 'SINGLE_LINE')
+    pictures = [(picture(ink), mode) for mode in modes]
     if any(closed(line, box([p for line in ink for p in line])[3]) for line in ink):
-        pictures.append((picture(ink, filled=True), 'SINGLE_WORD'))
+        pictures += [(picture(ink, filled=True), mode) for mode in modes]
     first = None
     for image, mode in pictures:
         api = _api(mode)
-        api.SetImage(image or pictures[0][0])
+        api.SetImage(image)
         text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
         reading = (text, float(api.MeanTextConf()) if text else 0.0)
         if text == expected and reading[1] >= CONFIDENT:

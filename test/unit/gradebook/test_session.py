@@ -1,11 +1,14 @@
-"""When the grader stops watching a run: each reason alone ends it, among
-them a full record of the grader's simulator (it said it stopped the run,
-and did not)."""
+"""The session's steps that need no world: when the grader stops watching
+a run (each reason alone ends it, among them a full record of the
+grader's simulator that said it stopped the run, and did not), what a
+failed build says, and what runs for want of a launch file."""
+import os
 from types import SimpleNamespace
 
 import pytest
 
-from turtle_letters.gradebook.session import first_error, watching
+from turtle_letters.gradebook.session import first_error, generated_launch, prepare, watching
+from turtle_letters.gradebook.submission import find
 
 
 def parts(**changed):
@@ -46,3 +49,18 @@ def test_a_failed_build_says_its_first_error_in_its_own_words():
     gcc = "make[2]: *** [x] Error 1\nsrc/main.cpp:58:27: error: no matching function\n"
     assert first_error(gcc) == 'src/main.cpp:58:27: error: no matching function'
     assert first_error('nothing useful\n') == 'see log.txt'
+
+
+def test_scripts_handed_in_without_the_execute_bit_are_started_for_want_of_a_launch_file(tmp_path):
+    """A real class's package: no launch file, its one script mode 644.
+    The copy's script is made executable, and that is the one started."""
+    folder = tmp_path / 'sub' / 'lab'
+    (folder / 'scripts').mkdir(parents=True)
+    (folder / 'package.xml').write_text('<package format="2"><name>lab</name></package>')
+    (folder / 'scripts' / 'draw_m.py').write_text('#!/usr/bin/env python3\n')
+    os.chmod(folder / 'scripts' / 'draw_m.py', 0o644)
+    work = tmp_path / 'work'
+    package = find(str(tmp_path / 'sub'))
+    assert prepare(package, str(work)) == ['scripts/draw_m.py']
+    path, names = generated_launch(SimpleNamespace(work=str(work)), package)
+    assert names == ['draw_m.py'] and 'type="draw_m.py"' in open(path).read()
