@@ -236,9 +236,9 @@ def python_scripts(folder, depth=3):
     """The names of the executable scripts in a package's folders whose
     first line names Python: what a TA can run without a build."""
     files = _executable(_plain_files(folder, depth, lambda found: False))
-    return sorted({entry.name for entry in files
-                   if b'python' in (read_plain(entry.path, 100) or b'').split(b'\n')[0]
-                   and (read_plain(entry.path, 2) or b'') == b'#!'})[:MAX_NODES]
+    firsts = {entry.name: (read_plain(entry.path, 100) or b'').split(b'\n')[0] for entry in files}
+    return sorted(name for name, first in firsts.items()
+                  if first.startswith(b'#!') and b'python' in first)[:MAX_NODES]
 
 
 def _executable(entries):

@@ -9,6 +9,7 @@ from scipy.ndimage import distance_transform_edt, maximum_filter
 CELL = 0.01         # share of the height: the grid distances are measured on
 WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a dash)
 THIN = 0.2          # half the width, share of the height, of an outline's band at most
+CLOSED = 0.03       # share of the height within which a line's ends meet: a contour
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 
 
@@ -76,6 +77,11 @@ def turned(lines, degrees, centre):
             for line in lines]
 
 
+def closed(line, height):
+    """Whether a line of ink comes back where it began: a contour."""
+    return len(line) > 3 and math.dist(line[0], line[-1]) <= CLOSED * height
+
+
 def outline(ink):
     """Where `ink` is a letter's outline (a block letter drawn round its
     edge, or a duplex font's letter of two parallel lines): its closed
@@ -85,7 +91,7 @@ def outline(ink):
     (A loop drawn as a letter, an O or a D, fills a wide shape: no outline.)"""
     points = [p for line in ink for p in line]
     x, y, w, h = box(points)
-    contours = [line for line in ink if len(line) > 3 and math.dist(line[0], line[-1]) <= 0.03 * h]
+    contours = [line for line in ink if closed(line, h)]
     if not contours or h <= 0 or w > WIDEST * h:
         return None
     length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))

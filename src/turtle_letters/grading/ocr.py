@@ -10,13 +10,12 @@ each of TILTS; a reading of the expected text at CONFIDENT or more is
 kept, else the reading level. (Turned, a J read as an S at 86%: what
 reads as something else level is not turned until it reads as hoped.)
 """
-import math
 import os
 import string
 import threading
 from typing import NamedTuple
 
-from .ink import box, thinned, turned
+from .ink import box, closed, thinned, turned
 from .recognition import letters_of, row_tilts
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
@@ -24,7 +23,6 @@ PAD_PX = 16
 CONFIDENT = 80          # Tesseract's confidence (0-100) from which a reading is believed
 CONFIDENT_TURNED = 90   # ... turned back: each turn is one more chance to see what is hoped
 TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by to be read
-CLOSED = 0.03          # share of the height within which a line's ends meet: a contour
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
 _apis = threading.local()       # Tesseract's handles are not shared between threads
 # Tesseract's OpenMP would take every core while it reads: the grader reads
@@ -36,11 +34,6 @@ class OcrReading(NamedTuple):
     text: str               # A-Z, '' when nothing reads
     confidence: float       # 0-100
     tilt: float = 0.0       # degrees the ink lies off level
-
-
-def closed(line, height):
-    """Whether a line of ink comes back where it began: a contour."""
-    return len(line) > 3 and math.dist(line[0], line[-1]) <= CLOSED * height
 
 
 def picture(ink, filled=False):
