@@ -137,7 +137,7 @@ def _build_and_launch(results):
 def sandbox_cost(reps=3):
     """Seconds to build and launch Lena's package in the sandbox and
     without it, `reps` times each, and to make and remove the sandbox alone."""
-    from turtle_letters.gradebook.sandbox import Sandbox
+    from turtle_letters.isolation.sandbox import Sandbox
     lena = os.path.join(CLASS, 'submissions', 'c03_lena')
     times = {'sandboxed': [], 'unsandboxed': []}
     for _ in range(reps):
@@ -184,8 +184,8 @@ def _user_usage(user):
 
 def world_cost():
     """One student's world: seconds to start it, then its idle CPU and memory."""
-    from turtle_letters.gradebook.sandbox import Sandbox
-    from turtle_letters.gradebook.world import GradingWorld
+    from turtle_letters.isolation.sandbox import Sandbox
+    from turtle_letters.autograder.world import GradingWorld
     with Sandbox() as box:
         world = GradingWorld(box)
         try:

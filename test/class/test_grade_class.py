@@ -121,7 +121,7 @@ def test_the_sandbox_is_as_its_rules_say(tmp_path):
     the system read-only, root's files unreadable, the class hidden, only
     its work folder and /tmp writable, a cgroup of its own, no service's
     socket in /run, loopback only."""
-    from turtle_letters.gradebook.sandbox import USER, Sandbox
+    from turtle_letters.isolation.sandbox import USER, Sandbox
     before = sandbox_processes()
     probe = ('id -u; grep CapEff /proc/self/status; ls "$0" | wc -l; touch /usr/x 2>&1; '
              'head -c1 /etc/shadow 2>&1; touch "$1/mine" /tmp/mine && echo wrote; '
@@ -142,7 +142,7 @@ def test_the_sandbox_shows_a_workspace_in_a_home_but_not_the_home(tmp_path, monk
     """An instructor's ~/catkin_ws on the ROS path: the sandbox shows that
     workspace's folders, read-only, and nothing else of the home (a key in
     ~/.ssh, another class's grades)."""
-    from turtle_letters.gradebook.sandbox import Sandbox
+    from turtle_letters.isolation.sandbox import Sandbox
     home = f'/home/turtle_letters_test_{os.getpid()}'
     devel = os.path.join(home, 'catkin_ws', 'devel', 'lib', 'python3', 'dist-packages')
     try:

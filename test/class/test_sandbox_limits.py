@@ -31,7 +31,7 @@ FORKS = ('import os, time\n'
      'disk limit of 1 GiB reached (its files, /tmp and /dev/shm together)'),
 ])
 def test_each_limit_stops_the_sandbox_in_words(command, says):
-    from turtle_letters.gradebook.sandbox import LIMITS, Sandbox
+    from turtle_letters.isolation.sandbox import LIMITS, Sandbox
     limits = dict(LIMITS, cpu=(1, LIMITS['cpu'][1]))
     before = sandbox_processes()
     with Sandbox(limits=limits) as box:
@@ -46,7 +46,7 @@ def test_the_core_given_holds_and_two_at_once_are_different_users():
     """Given core 0, a command that widens its own affinity still runs on
     core 0 alone (a cgroup's cpuset, not taskset); its work folder is its
     user's alone, and the one graded beside it is another user."""
-    from turtle_letters.gradebook.sandbox import USER, Sandbox
+    from turtle_letters.isolation.sandbox import USER, Sandbox
     probe = ('taskset -pc 0-63 $$ >/dev/null 2>&1; grep Cpus_allowed_list /proc/self/status; '
              'id -u')
     before = sandbox_processes()

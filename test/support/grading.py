@@ -12,7 +12,7 @@ import time
 
 from support.children import readable_env
 
-# turtle_letters.gradebook.sandbox.USER(S): the submissions' users, then their worlds' (world.py)
+# turtle_letters.isolation.sandbox.USER(S): the submissions' users, then their worlds' (world.py)
 SANDBOX_USERS = range(2000000000, 2000000000 + 2 * 256)
 CGROUPS = '/sys/fs/cgroup'
 
@@ -112,7 +112,7 @@ def container(writable):
     `writable` writable, the ROS environment's folders under /tmp shown (a
     checkout there, as CI's may be); the folders above each made 0755, so a
     cadet's user reaches them (bubblewrap would make them 0700)."""
-    from turtle_letters.gradebook.sandbox import underlays
+    from turtle_letters.isolation.sandbox import underlays
     box = ['bwrap', '--ro-bind', '/', '/', '--dev', '/dev', '--proc', '/proc', '--tmpfs', '/tmp']
     for path in underlays(os.environ):
         box += _reachable(path) + ['--ro-bind', path, path]

@@ -16,20 +16,22 @@ FOLDERS = sorted(f for f in os.listdir(SRC) if os.path.isdir(os.path.join(SRC, f
 LAYERS = [
     {'lab', 'keys'},                    # the lab's N and the talker's keys: pure, the ground
     {'letters'},                        # strokes, layout, plans: pure
+    {'reading'},                        # letters read from ink: pure
     {'motion'},                         # carrying a plan out on a turtle
     {'settings'},                       # the nodes' parameters
+    {'isolation'},                      # untrusted code and files kept in their place
     {'classroom'},                      # many students on one turtlesim
     {'turtle', 'actions', 'grading'},   # the lab's turtle; requests; scoring
     {'controller', 'talker'},           # the lab's nodes
     {'viewer'},                         # the room seen from any seat: a live page, an image
-    {'gradebook'},                      # the instructor's: a class graded as handed in
+    {'autograder'},                     # the instructor's: a class graded as handed in
 ]
 PURE = {'lab', 'keys', 'letters', 'settings', 'motion.modes', 'motion.executors', 'motion.control',
         'motion.latency',
         'classroom.names',
-        'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture',
-        'grading.recognition', 'grading.forms', 'grading.ink', 'grading.ocr', 'gradebook.observations', 'gradebook.rubric', 'gradebook.roster',
-        'gradebook.reports', 'gradebook.submission', 'gradebook.failures', 'grading.files',
+        'classroom.parts', 'classroom.hosts', 'grading.scoring', 'grading.picture', 'reading',
+        'autograder.observations', 'autograder.rubric', 'autograder.roster',
+        'autograder.reports', 'autograder.submission', 'autograder.failures', 'isolation.files',
         'grading.procstat', 'actions.jobs', 'actions.progress', 'viewer.trails', 'viewer.pens', 'viewer.picture',
         'viewer.server'}
 ROS = ('rospy', 'rosgraph', 'actionlib', 'geometry_msgs', 'std_msgs', 'std_srvs', 'turtlesim')

@@ -1,1 +1,1 @@
-"""Scoring a drawing against its letter: the grader node, the room's scoreboard, the pictures."""
+"""The live grader in the lab: a drawing scored against its letter, the room's scoreboard, the pictures."""

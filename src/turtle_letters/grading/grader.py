@@ -23,7 +23,7 @@ from ..classroom.liveness import answers
 from ..letters.geometry import PlannedPose
 from ..settings import (Parameter, ParameterError, Settings, positive, read_parameter,
                         writable_folder)
-from .files import report_stem
+from ..isolation.files import report_stem
 from .procstat import cpu_seconds
 from .scoring import SETTLE, DrawingWatch, Tolerances, ideal_letter, score
 

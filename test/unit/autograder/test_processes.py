@@ -6,7 +6,7 @@ import subprocess
 import sys
 import time
 
-from turtle_letters.gradebook.processes import Capped, ControllerCpu, Reader
+from turtle_letters.autograder.processes import Capped, ControllerCpu, Reader
 
 
 def test_the_start_and_end_are_kept_and_the_middle_counted():

@@ -2,7 +2,7 @@
 run outside the sandbox, that reports as JSON lines on stdout each /chatter
 message (with the time it came and the node that sent it) and, twice a
 second, who publishes and serves what. A line "P" on stdin publishes "P"
-on /chatter. Run as `python3 -m turtle_letters.gradebook.watch`.
+on /chatter. Run as `python3 -m turtle_letters.autograder.watch`.
 
 What was drawn is not its to see: the grader's simulator records that
 (world.py). Only the first CHATTER_SHOWN messages on /chatter of each

@@ -10,7 +10,7 @@ import urllib.parse
 import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
 
-from ..grading.files import safe_name, shown
+from ..isolation.files import safe_name, shown
 from .rubric import Grade
 
 NOT_GRADED = 'not graded'

@@ -1,7 +1,7 @@
 """The roster against the submissions folder."""
 import pytest
 
-from turtle_letters.gradebook.roster import RosterError, expected, first_letter, read
+from turtle_letters.autograder.roster import RosterError, expected, first_letter, read
 
 
 def setup_class(tmp_path, roster_text, folders):

@@ -4,8 +4,8 @@ import csv
 import json
 import xml.etree.ElementTree as ElementTree
 
-from turtle_letters.gradebook import reports
-from turtle_letters.gradebook.rubric import Grade, Mark
+from turtle_letters.autograder import reports
+from turtle_letters.autograder.rubric import Grade, Mark
 
 PASSED = Grade([Mark('It builds', 10, 10, 'built'), Mark('Its accuracy', 15, 20, '7% off')],
                25, 30, 'pass', 'Its accuracy: 7% off')

@@ -3,8 +3,8 @@ a person reads it: touching letters, tilts, and no mirrored letter taken
 for itself. The ink is the builtin font's, placed as a cadet places it."""
 import pytest
 
-from turtle_letters.grading.ocr import CONFIDENT, read_text, supports
-from turtle_letters.grading.ink import turned
+from turtle_letters.reading.ocr import CONFIDENT, read_text, supports
+from turtle_letters.reading.ink import turned
 
 from support.glyph_rows import row
 

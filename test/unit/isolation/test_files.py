@@ -4,7 +4,7 @@ import os
 
 import pytest
 
-from turtle_letters.grading.files import report_stem, safe_name
+from turtle_letters.isolation.files import report_stem, safe_name
 
 
 @pytest.mark.parametrize('text', ['/', '1/2', '..', '.', '', 'a b', '%2F', '/alice/2', '~x'])
@@ -31,7 +31,7 @@ def test_the_grader_saves_the_report_of_a_slash(tmp_path):
 
 
 def test_text_shown_is_one_safe_line_of_bounded_length():
-    from turtle_letters.grading.files import LINE_MOST, shown
+    from turtle_letters.isolation.files import LINE_MOST, shown
     assert shown('a\nb\tc\x1b[2J\x0c\u202e\x7f') == 'a b c [2J   '
     assert shown(b'M\xfcller') == shown('M\udcfcller') == 'M\ufffdller'
     assert shown('\ud800x') == '\ufffd\ufffd\ufffdx'     # a lone surrogate, as JSON can give one
@@ -44,7 +44,7 @@ def test_a_file_name_keeps_a_folder_names_undecodable_bytes_distinct():
 
 def test_a_tree_deeper_than_python_recurses_is_removed(tmp_path):
     from support.grading import nest
-    from turtle_letters.grading.files import remove_tree
+    from turtle_letters.isolation.files import remove_tree
     nest(tmp_path, 1200)
     remove_tree(str(tmp_path / 'd'))
     assert os.listdir(str(tmp_path)) == []

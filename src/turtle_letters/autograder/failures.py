@@ -5,7 +5,7 @@ and only their last part."""
 import os
 import re
 
-from ..grading.files import read_plain
+from ..isolation.files import read_plain
 from . import observations as seen
 
 ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')

@@ -7,8 +7,8 @@ from types import SimpleNamespace
 
 import pytest
 
-from turtle_letters.gradebook.session import first_error, generated_launch, prepare, watching
-from turtle_letters.gradebook.submission import find
+from turtle_letters.autograder.session import first_error, generated_launch, prepare, watching
+from turtle_letters.autograder.submission import find
 
 
 def parts(**changed):

@@ -8,8 +8,8 @@ import signal
 
 import pytest
 
-from turtle_letters.gradebook import cli, rubric as rubrics
-from turtle_letters.gradebook.roster import Student
+from turtle_letters.autograder import cli, rubric as rubrics
+from turtle_letters.autograder.roster import Student
 
 HERE = os.path.dirname(__file__)
 RUBRIC = os.path.join(HERE, '..', '..', '..', 'config', 'rubric.yaml')

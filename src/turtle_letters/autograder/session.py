@@ -24,7 +24,7 @@ from .failures import talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, JsonLines, Reader
 from .reports import plain
 from .rubric import Limits
-from .sandbox import GiB, Sandbox
+from ..isolation.sandbox import GiB, Sandbox
 from .submission import MAX_NODES, Package, copy, made_executable, python_scripts, scripts
 from .world import GradingWorld, course_environment, stand_in, stand_in_started
 
@@ -182,7 +182,7 @@ class Watcher:
         try:
             joining = self.cgroup.joining() if self.cgroup is not None else []
             self.process = box.started(subprocess.Popen(
-                joining + box.beside(['/usr/bin/python3', '-m', 'turtle_letters.gradebook.watch']),
+                joining + box.beside(['/usr/bin/python3', '-m', 'turtle_letters.autograder.watch']),
                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
                 cwd=self.home, start_new_session=True))
         except BaseException:

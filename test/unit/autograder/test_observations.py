@@ -2,7 +2,7 @@
 ink counts (the grader's simulator's record), and who triggered it."""
 import pytest
 
-from turtle_letters.gradebook.observations import (chatter_peak, drawing, drew, looked_for_from,
+from turtle_letters.autograder.observations import (chatter_peak, drawing, drew, looked_for_from,
                                                    moved, own_triggers, stood_for, strokes,
                                                    roles, trigger, unprompted)
 

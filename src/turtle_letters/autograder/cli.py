@@ -28,11 +28,12 @@ import traceback
 
 import rospkg
 
-from ..grading.files import shown
-from ..grading.ocr import read_text, said as ocr_said
-from ..grading.recognition import read_row
+from ..isolation.files import shown
+from ..reading.ocr import read_text, said as ocr_said
+from ..reading.recognition import read_row
 from . import observations as seen
-from . import reports, rubric as rubrics, sandbox, session, submission
+from ..isolation import sandbox
+from . import reports, rubric as rubrics, session, submission
 from .roster import RosterError, Student
 from .roster import expected as expected_of
 from .roster import read as read_roster

@@ -19,7 +19,7 @@ import threading
 import time
 
 from .processes import JsonLines
-from .sandbox import GiB, closed_folder
+from ..isolation.sandbox import GiB, closed_folder
 
 _WORLDS = itertools.count(1)
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it

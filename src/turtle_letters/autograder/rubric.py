@@ -5,9 +5,9 @@ from typing import Dict, List, NamedTuple, Optional
 
 import yaml
 
-from ..grading.files import shown
-from ..grading.ocr import OcrReading, said as ocr_said, supports
-from ..grading.recognition import Reading
+from ..isolation.files import shown
+from ..reading.ocr import OcrReading, said as ocr_said, supports
+from ..reading.recognition import Reading
 from .observations import Drawing
 from .roster import EXPECTED
 

@@ -9,7 +9,7 @@ import stat
 import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
 
-from ..grading.files import read_plain
+from ..isolation.files import read_plain
 
 SKIPPED = {'.git', 'build', 'devel', 'install', 'logs', '__pycache__'}
 MAX_BYTES = 1 << 20      # a package.xml or launch file larger than this is not read

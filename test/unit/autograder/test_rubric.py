@@ -4,11 +4,11 @@ import os
 
 import pytest
 
-from turtle_letters.gradebook.observations import Drawing
-from turtle_letters.gradebook.rubric import CRITERIA, Facts, RubricError, grade, load
-from turtle_letters.gradebook.session import Step
-from turtle_letters.grading.ocr import read_text
-from turtle_letters.grading.recognition import read_row
+from turtle_letters.autograder.observations import Drawing
+from turtle_letters.autograder.rubric import CRITERIA, Facts, RubricError, grade, load
+from turtle_letters.autograder.session import Step
+from turtle_letters.reading.ocr import read_text
+from turtle_letters.reading.recognition import read_row
 
 from support.glyph_rows import row
 
@@ -181,7 +181,7 @@ def test_initials_earn_each_letter_in_its_place():
 
 
 def test_a_tilted_letter_is_read_and_its_tilt_said():
-    from turtle_letters.grading.ink import turned
+    from turtle_letters.reading.ink import turned
     tilted = turned([L_PATH], 10, (1.5, 2.0))
     said = scores_of(grade(facts(Drawing(tilted, 1.0, 5.0, 90, [])), load(DEFAULT)))
     assert said['The letter drawn is the expected one'] == (25, 'drew L, as expected')

@@ -2,7 +2,7 @@
 found where roscpp's are, whichever workspace built them. No ROS here."""
 import os
 
-from turtle_letters.gradebook import world as machine
+from turtle_letters.autograder import world as machine
 
 
 def headers(folder):

@@ -4,7 +4,7 @@ visible, read-only, folder by folder: never the home or top folder that
 holds it, since the sandbox covers those folders."""
 import os
 
-from turtle_letters.gradebook.sandbox import underlays
+from turtle_letters.isolation.sandbox import underlays
 
 
 def test_a_workspace_under_tmp_and_the_checkout_its_links_point_into(tmp_path):

@@ -6,7 +6,7 @@ import subprocess
 import sys
 import time
 
-from turtle_letters.gradebook.world import stand_in, stand_in_started
+from turtle_letters.autograder.world import stand_in, stand_in_started
 
 
 def wait_for(condition, seconds=10.0):

@@ -23,7 +23,7 @@ import subprocess
 import tempfile
 import time
 
-from ..grading.files import remove_tree
+from .files import remove_tree
 
 MASTER_PORT = 11311
 # The users submissions run as, one for each graded at once: ids far above

@@ -1,10 +1,10 @@
 """Finding a cadet's package in their folder, and the launch file the lab runs."""
 import os
 
-from turtle_letters.gradebook import submission
+from turtle_letters.autograder import submission
 from support.grading import nest
-from turtle_letters.grading.files import remove_tree
-from turtle_letters.gradebook.submission import copy, find
+from turtle_letters.isolation.files import remove_tree
+from turtle_letters.autograder.submission import copy, find
 
 PACKAGE = '<package format="2"><name>{}</name></package>'
 LAB = ('<launch><node pkg="turtlesim" type="turtlesim_node" name="sim"/>'

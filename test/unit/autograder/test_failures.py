@@ -2,7 +2,7 @@
 and from the nodes' log files."""
 import os
 
-from turtle_letters.gradebook.failures import talker_failure, why_not_launched, why_still
+from turtle_letters.autograder.failures import talker_failure, why_not_launched, why_still
 
 # roslaunch's terminal as the lab's talker dies under Python 3
 DIED = '''process[sim-2]: started with pid [34]
@@ -61,7 +61,7 @@ def test_of_a_flood_of_log_files_only_some_are_read_and_none_deeper_than_roslaun
         tmp_path):
     """A node may write any number of log files, in folders nested at will:
     the grader reads LOGS_READ at most, LOG_DEPTH folders down."""
-    from turtle_letters.gradebook import failures
+    from turtle_letters.autograder import failures
     logs = tmp_path / 'home' / '.ros' / 'log' / 'run'
     logs.mkdir(parents=True)
     for n in range(500):

@@ -7,8 +7,8 @@ import string
 
 import pytest
 
-from turtle_letters.grading.ink import MAX_POINTS, outline, thinned, turned
-from turtle_letters.grading.recognition import apart, read, read_row
+from turtle_letters.reading.ink import MAX_POINTS, outline, thinned, turned
+from turtle_letters.reading.recognition import apart, read, read_row
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import placed, retraced, rounded
