@@ -4,10 +4,11 @@
     grade_class.py --one FOLDER --name NAME [--letter L] --out OUT   (exit 0 pass, 1 fail)
     grade_class.py --gradescope           (/autograder/submission to results/results.json)
 
-Each student in roster order, N at a time, each in a sandbox with a ROS
-master of its own (session.py); the rubric scores what happened (rubric.py)
-and reports.py writes it out. The grader's own failure on one submission
-is that student's row, never the class's. Exit 0 once every student has a
+Here: the arguments, the pool (N students at a time, each in a slot of
+its own: a user, a core), the progress, the signals and the class's files.
+How one student becomes their row is driver.py's, stage by stage. The
+grader's own failure on one submission is that student's row, never the
+class's. Exit 0 once every student has a
 row, 2 on input that stops grading before anything runs, 130 (Ctrl-C) or
 143 (SIGTERM) when stopped: every sandbox ended, the class files written
 for the students graded so far and marked incomplete.
@@ -24,22 +25,17 @@ import sys
 import tempfile
 import threading
 import time
-import traceback
 
 import rospkg
 
 from ..isolation.files import shown
-from ..reading.ocr import read_text, said as ocr_said
-from ..reading.recognition import read_row
-from . import observations as seen
 from ..isolation import sandbox
-from . import reports, rubric as rubrics, session, submission
+from . import driver, reports, rubric as rubrics
 from .roster import RosterError, Student
 from .roster import expected as expected_of
 from .roster import read as read_roster
 
 GRADESCOPE = '/autograder'
-MAX_ALONE = 4           # executables a TA tries each alone, at most
 
 
 def arguments(argv):
@@ -76,10 +72,6 @@ def arguments(argv):
 
 def default_rubric():
     return os.path.join(rospkg.RosPack().get_path('turtle_letters'), 'config', 'rubric.yaml')
-
-
-class Stopped(Exception):
-    """Grading was stopped (Ctrl-C, SIGTERM) before this student was done."""
 
 
 class Place:
@@ -120,6 +112,17 @@ class Place:
                     self.boxes.discard(box)
             self.slots.put((slot, cpu))
 
+    @contextlib.contextmanager
+    def grading(self, student_id):
+        """`student_id` among those being graded (the progress bar shows them)."""
+        with self.lock:
+            self.current.append(student_id)
+        try:
+            yield
+        finally:
+            with self.lock:
+                self.current.remove(student_id)
+
     def stop(self):
         """Every sandbox running ended now, and none started after."""
         self.stopping.set()
@@ -129,137 +132,11 @@ class Place:
             box.stop()
 
 
-def facts_of(student, rubric, place):
-    """Run the student's submission and say what happened: (facts, run,
-    what of the submission was left out)."""
-    if student.folder is None:
-        return rubrics.Facts.never_ran(student.expected, 'no submission'), None, []
-    package = submission.find(student.folder)
-    if package.problem:
-        return rubrics.Facts.never_ran(student.expected, package.problem), None, package.notes
-    with place.sandbox() as box:
-        run = session.run(package, rubric.limits, box)
-        facts = facts_of_run(student, run, rubric)
-        facts, run = each_alone(student, rubric, box, facts, run)
-    if box.stopped:
-        raise Stopped()
-    return facts, run, package.notes
-
-
-def each_alone(student, rubric, box, facts, run):
-    """A TA's fallback: executables started together (no launch file) that
-    did not draw the letters run each alone, in a fresh world, the first
-    MAX_ALONE of them, until one does; the best (facts, run) kept."""
-    first, best = run, rubrics.grade(facts, rubric).score
-    for name in first.executables[:MAX_ALONE] if len(first.executables) > 1 else []:
-        if box.stopped or len(rubrics.credited(facts)) == len(student.expected):
-            break
-        tried = session.alone(first, name, rubric.limits, box)
-        tried_facts = facts_of_run(student, tried, rubric)
-        if rubrics.grade(tried_facts, rubric).score > best:
-            facts, run, best = tried_facts, tried, rubrics.grade(tried_facts, rubric).score
-    return facts, run
-
-
-def facts_of_run(student, run, rubric):
-    """The facts of one run: its steps, and its drawing read."""
-    drawing, readings, ocr = None, [], None
-    if run.trigger is not None:
-        drawing = seen.drawing(run.record, run.events, run.since, rubric.limits.settle,
-                               run.finished)
-        readings = read_row(drawing.strokes, student.expected) if drawing.strokes else []
-        # OCR, the slower reader, is asked where the strokes do not read what was expected
-        if drawing.strokes and rubrics.drawn(readings) != student.expected:
-            ocr = read_text(drawing.strokes, student.expected)
-    return rubrics.Facts(
-        student.expected, build=run.build, launch=run.launch, waited=run.waited,
-        talker=run.talker, drawing=drawing, readings=readings, stuck=run.stuck, limit=run.limit,
-        own_triggers=seen.own_triggers(run.events), chatter_peak=seen.chatter_peak(run.events),
-        broken=run.broken, ocr=ocr)
-
-
-def facts_or_failure(student, rubric, place):
-    """(facts, run, notes, the grader's own error or ''): a failure of the
-    grader on this submission becomes its facts, never the class's end."""
-    try:
-        return facts_of(student, rubric, place) + ('',)
-    except Stopped:
-        raise
-    except Exception as e:      # whatever the submission made the grader meet
-        if place.stopping.is_set():
-            raise Stopped() from None
-        return failed(student, e), None, [], traceback.format_exc()
-
-
-def failed(student, error):
-    """The facts of a submission the grader itself failed on."""
-    problem = f'the grader failed on this submission: {type(error).__name__}: {error}'
-    return rubrics.Facts.never_ran(student.expected, shown(problem))
-
-
-def grade_student(student: Student, rubric, out, place, warning=''):
-    """One student's row; their results.json and log.txt written (the picture: later)."""
-    if place.stopping.is_set():
-        raise Stopped()
-    started = time.monotonic()
-    with place.lock:
-        place.current.append(student.id)
-    try:
-        facts, run, notes, error = facts_or_failure(student, rubric, place)
-    finally:
-        with place.lock:
-            place.current.remove(student.id)
-    warning = '; '.join(filter(None, [warning] + notes))
-    graded = rubrics.grade(facts, rubric)
-    drawn = rubrics.drawn_text(facts)
-    board = leaderboard(facts, run)
-    row = reports.Row(student.id, student.name, student.expected, drawn, graded,
-                      time.monotonic() - started, board, None, warning)
-    sections = run.log if run else [('submission', facts.problem)]
-    sections += [('left out of the submission', '\n'.join(notes))] if notes else []
-    sections += [("the grader's own error", error)] if error else []
-    os.makedirs(reports.folder(out, student.id), exist_ok=True)
-    reports.write_log(out, student.id, sections)
-    reports.write_results(os.path.join(reports.folder(out, student.id), 'results.json'), row)
-    return row, facts
-
-
-def leaderboard(facts, run):
-    d = facts.drawing
-    if d is None or d.started is None:
-        return []
-    board = [('drawing time (s)', round(d.seconds, 2), 'asc'),
-             ('cmd_vel rate (/s)', round(d.commands / max(d.seconds, 1e-6), 1), 'asc')]
-    if run and run.cpu_pct is not None:
-        board.append(('controller CPU (%)', round(run.cpu_pct, 1), 'asc'))
-    fits = [r.best.fit for r in facts.readings if r.best is not None]
-    if fits:
-        board.append(('worst deviation (% of height)', round(100 * max(fits), 2),
-                      'asc'))
-    return board
-
-
-def draw_picture(out, row, facts):
-    """OUT/ID/drawing.png: the ink as turtlesim drew it, and over it each
-    letter read, named; the expected letters in words only (Qt: main
-    thread only). A guess (ink no letter fits) is never drawn."""
-    d = facts.drawing
-    if d is None or not d.strokes:
-        return row
-    from ..grading.picture import draw_ink
-    right = rubrics.credited(facts)
-    letters = [(e if r.letter == e else f'{e} (OCR)', r.fits[e].strokes)
-               for r, e in right if e in r.fits]
-    letters += [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
-                if r.letter and all(r is not c for c, _ in right)]
-    ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
-    caption = (f'{row.id}: expected {facts.expected or "?"}; its strokes read '
-               f'{rubrics.drawn(facts.readings) or "no letter"}{ocr}\n'
-               f'credited: {"".join(e for _, e in right) or "none"}; left: the canvas as '
-               f'turtlesim showed it; right: the ink enlarged, each letter read dashed over it')
-    path = os.path.join(reports.folder(out, row.id), 'drawing.png')
-    draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, letters, caption)
-    return row._replace(picture=os.path.relpath(path, out))
+def ready_to_paint():
+    """Qt's application, made in the main thread as Qt wants, so that each
+    student's picture is painted in their own thread (reports.picture)."""
+    from ..grading.picture import application
+    application()
 
 
 def said(row, isolated):
@@ -304,18 +181,18 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     signal's name if Ctrl-C or SIGTERM stopped it, with only the rows done)."""
     warnings = warnings or {}
     place = Place(hidden, args.isolated, args.jobs)
-    pool = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs)
-    futures = [pool.submit(grade_student, s, rubric, out, place, warnings.get(s.id, ''))
-               for s in students]
+    ready_to_paint()
     progress, rows, stopped = Progress(len(students), place), {}, ''
-    before = _on_signal(_first_stop(place))
+    before = _on_signal(_first_stop(place))     # before any student starts
+    pool, futures = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs), []
     try:
+        for student in students:
+            futures.append(pool.submit(driver.grade, student, rubric, out, place,
+                                       warnings.get(student.id, '')))
         for i, future in enumerate(futures):
-            rows[i] = _finished(out, _graded(future, students[i], rubric), progress,
-                                args.isolated)
+            rows[i] = _finished(future.result(), progress, args.isolated)
             # each row kept as it comes: a grader killed outright keeps what it graded
             reports.write_csv(os.path.join(out, 'grades.csv'), [rows[j] for j in sorted(rows)])
-            _Painting.release()     # a stop that came while it painted: its row is kept
     except KeyboardInterrupt as e:
         stopped = str(e) or 'SIGINT'
         print(f'\ngrade_class.py: {stopped}: stopping (again to force)', file=sys.stderr,
@@ -330,48 +207,13 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     for i, future in enumerate(futures):    # done while it stopped: they count
         if i not in rows and future.done() and not future.cancelled() and \
                 future.exception() is None:
-            rows[i] = _finished(out, future.result(), progress, args.isolated)
+            rows[i] = _finished(future.result(), progress, args.isolated)
     progress.close()
     return [rows[i] for i in sorted(rows)], stopped
 
 
-def _graded(future, student, rubric):
-    """The student's (row, facts); where the grader failed even in scoring
-    or writing their files, a row that says so, with no files."""
-    try:
-        return future.result()
-    except Stopped:
-        raise
-    except Exception as e:
-        facts = failed(student, e)
-        return reports.Row(student.id, student.name, student.expected, '',
-                           rubrics.grade(facts, rubric), 0.0, [], None), facts
-
-
-class _Painting:
-    """Whether a picture is being painted, and a stop that came meanwhile:
-    Ctrl-C raised mid-paint leaves Qt painting on an image Python frees,
-    and the grader dies of SIGSEGV instead of writing the class files."""
-    now = False
-    held = None
-
-    @classmethod
-    def release(cls):
-        """The stop that waited for the picture, acted on now."""
-        held, cls.held = cls.held, None
-        if held is not None:
-            signal.getsignal(held[0])(*held)
-
-
-def _finished(out, graded, progress, isolated):
-    row, facts = graded
-    _Painting.now = True
-    try:
-        row = draw_picture(out, row, facts)
-    except Exception as e:      # no picture costs no row
-        row = row._replace(warning='; '.join(filter(None, [row.warning, f'no picture: {e}'])))
-    finally:
-        _Painting.now = False
+def _finished(graded, progress, isolated):
+    row, _ = graded
     progress.row(said(row, isolated))
     return row
 
@@ -389,9 +231,6 @@ def _interrupt(number, _):
 def _first_stop(place):
     """Ctrl-C or SIGTERM while grading: the next one forces, from now on."""
     def first(number, frame):
-        if _Painting.now:
-            _Painting.held = (number, frame)
-            return
         _on_signal(_force(place))
         _interrupt(number, frame)
     return first

@@ -55,6 +55,14 @@ class Drawing(NamedTuple):
         return [p for stroke in self.strokes for p in stroke]
 
 
+def of_run(run, settle):
+    """The drawing of a run (session.Run) from its trigger on; None if it
+    never reached the trigger."""
+    if run.trigger is None:
+        return None
+    return drawing(run.record, run.events, run.since, settle, run.finished)
+
+
 def _ever_in_graph(events, role):
     """Every node the graph reports ever held `role` (a key of a graph event)."""
     return {name for e in events if e['kind'] == 'graph' for name in e.get(role, [])}

@@ -11,7 +11,8 @@ import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
 
 from ..isolation.files import safe_name, shown
-from .rubric import Grade
+from ..reading.ocr import said as ocr_said
+from .rubric import Grade, credited, drawn
 
 NOT_GRADED = 'not graded'
 CSV_COLUMNS = ['id', 'name', 'expected', 'drawn', 'score', 'max_score', 'verdict', 'reason']
@@ -88,6 +89,60 @@ def results_json(row: Row):
 def write_results(path, row: Row):
     with open(path, 'w') as f:
         json.dump(results_json(row), f, indent=1)
+
+
+def write_student(out, row: Row, facts, sections):
+    """OUT/ID/: drawing.png, log.txt (`sections`: (title, text)) and
+    results.json: the row, its picture's path in it. No picture costs no
+    row: the row's warning says why."""
+    os.makedirs(folder(out, row.id), exist_ok=True)
+    try:
+        row = row._replace(picture=picture(out, row.id, facts))
+    except Exception as e:      # Qt could not paint it: the row stands
+        row = row._replace(warning='; '.join(filter(None, [row.warning, f'no picture: {e}'])))
+    write_log(out, row.id, sections)
+    write_results(os.path.join(folder(out, row.id), 'results.json'), row)
+    return row
+
+
+def leaderboard(facts, cpu_pct=None):
+    """The drawing's figures for Gradescope's leaderboard: (name, value, order)."""
+    d = facts.drawing
+    if d is None or d.started is None:
+        return []
+    board = [('drawing time (s)', round(d.seconds, 2), 'asc'),
+             ('cmd_vel rate (/s)', round(d.commands / max(d.seconds, 1e-6), 1), 'asc')]
+    if cpu_pct is not None:
+        board.append(('controller CPU (%)', round(cpu_pct, 1), 'asc'))
+    fits = [r.best.fit for r in facts.readings if r.best is not None]
+    if fits:
+        board.append(('worst deviation (% of height)', round(100 * max(fits), 2), 'asc'))
+    return board
+
+
+def picture(out, student_id, facts):
+    """OUT/ID/drawing.png, relative to OUT: the ink as turtlesim drew it,
+    and over it each letter read, named; the expected letters in words
+    only; None with no ink. A guess (ink no letter fits) is never drawn.
+    Painted in the student's own thread: Qt paints a QImage in any thread
+    once its application is made in the main one (cli: ready_to_paint)."""
+    d = facts.drawing
+    if d is None or not d.strokes:
+        return None
+    from ..grading.picture import draw_ink
+    right = credited(facts)
+    letters = [(e if r.letter == e else f'{e} (OCR)', r.fits[e].strokes)
+               for r, e in right if e in r.fits]
+    letters += [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
+                if r.letter and all(r is not c for c, _ in right)]
+    ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
+    caption = (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
+               f'{drawn(facts.readings) or "no letter"}{ocr}\n'
+               f'credited: {"".join(e for _, e in right) or "none"}; left: the canvas as '
+               f'turtlesim showed it; right: the ink enlarged, each letter read dashed over it')
+    path = os.path.join(folder(out, student_id), 'drawing.png')
+    draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, letters, caption)
+    return os.path.relpath(path, out)
 
 
 def write_csv(path, rows):

@@ -8,7 +8,7 @@ import yaml
 from ..isolation.files import shown
 from ..reading.ocr import OcrReading, said as ocr_said, supports
 from ..reading.recognition import Reading
-from .observations import Drawing
+from .observations import Drawing, chatter_peak, own_triggers
 from .roster import EXPECTED
 
 LIMITS = ('build', 'launch', 'stand', 'talker', 'start', 'drawing', 'settle')
@@ -67,6 +67,15 @@ class Facts(NamedTuple):
         """A submission that was never run (none handed in, no package, the
         grader's own failure): why, and nothing observed."""
         return cls(expected, problem)
+
+    @classmethod
+    def observed(cls, expected, run, drawing, readings, ocr):
+        """A run's facts: its steps (session.Run), the drawing seen in it and
+        the letters read from that drawing."""
+        return cls(expected, build=run.build, launch=run.launch, waited=run.waited,
+                   talker=run.talker, drawing=drawing, readings=readings, stuck=run.stuck,
+                   limit=run.limit, own_triggers=own_triggers(run.events),
+                   chatter_peak=chatter_peak(run.events), broken=run.broken, ocr=ocr)
 
 
 class Mark(NamedTuple):

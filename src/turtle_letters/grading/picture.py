@@ -14,6 +14,18 @@ from ..letters.layout import (CANVAS_PIXELS, DEFAULT_PEN, DEFAULT_PEN_WIDTH,  # 
                               WORLD_SIZE)
 from .scoring import distance_to_lines  # noqa: E402
 
+_APPLICATION = []      # kept: Qt's application must outlive every painting
+
+
+def application():
+    """Qt's application, which painting needs: made once, in the thread
+    that first asks (the main one: the class grader asks before its
+    students' threads paint, each on a QImage of its own)."""
+    if not _APPLICATION:
+        _APPLICATION.append(QApplication.instance() or QApplication([]))
+    return _APPLICATION[0]
+
+
 MAIN_SCALE = 90.0          # px per m in the overview
 INSET_SIZE = 240           # px: a box's side
 
@@ -21,7 +33,7 @@ INSET_SIZE = 240           # px: a box's side
 def draw(path_png, strokes, paths, colours, half_box=0.01):
     """strokes: ideal polylines in m; paths: {label: [[(x, y), ...], ...]}
     drawn in colours[label] (r, g, b); a box shows +-half_box m around a vertex."""
-    app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
+    application()
     colours = {label: QColor(*rgb) for label, rgb in colours.items()}
     inset_scale = INSET_SIZE / (2 * half_box)            # px per m in the boxes
     bar = 10 ** math.floor(math.log10(half_box / 2))     # m: the scale bar's length
@@ -109,7 +121,7 @@ def draw_canvas(path_png, drawings, tolerance=0.02):
     strokes in grey, the path in green (passed) or red where it is within
     `tolerance` m of them and dotted elsewhere (pen-up moves, mistakes), the
     label's lines above."""
-    app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
+    application()
     side = int(WORLD_SIZE * CANVAS_SCALE)
     image = QImage(side, side, QImage.Format_RGB32)
     image.fill(QColor('white'))
@@ -154,7 +166,7 @@ def draw_ink(path_png, strokes, looks, background, letters, caption):
     strokes), the letters read, drawn thin and dashed over the ink and
     named; `caption` (lines) above. Nothing expected is drawn: a guess's
     shape laid over the ink misleads."""
-    app = QApplication.instance() or QApplication([])  # noqa: F841 (Qt needs one)
+    application()
     lines = caption.split('\n')
     top = 16 * len(lines) + 10
     image = QImage(CANVAS_PIXELS + ZOOM_PX + 30, CANVAS_PIXELS + top + 10, QImage.Format_RGB32)

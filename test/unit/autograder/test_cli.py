@@ -5,10 +5,11 @@ one has its own row: test/class/test_odd_class.py), so the failure is
 stood in for: the RecursionError a tree 1,100 deep once raised."""
 import os
 import signal
+import time
 
 import pytest
 
-from turtle_letters.autograder import cli, rubric as rubrics
+from turtle_letters.autograder import cli, driver, rubric as rubrics
 from turtle_letters.autograder.roster import Student
 
 HERE = os.path.dirname(__file__)
@@ -18,10 +19,10 @@ RUBRIC = os.path.join(HERE, '..', '..', '..', 'config', 'rubric.yaml')
 def test_the_graders_own_failure_on_a_submission_is_its_row_only(tmp_path, monkeypatch):
     def fails(folder):
         raise RecursionError('maximum recursion depth exceeded')
-    monkeypatch.setattr(cli.submission, 'find', fails)
+    monkeypatch.setattr(driver.submission, 'find', fails)
     place = cli.Place([], isolated=False, jobs=1)
     student = Student('a\x1b[2J1', 'Ann', 'A', str(tmp_path))
-    row, _ = cli.grade_student(student, rubrics.load(RUBRIC), str(tmp_path / 'out'), place)
+    row, _ = driver.grade(student, rubrics.load(RUBRIC), str(tmp_path / 'out'), place)
     assert (row.grade.verdict, row.grade.score) == ('fail', 0)
     assert row.grade.reason == ('It builds: not tried: the grader failed on this submission: '
                                 'RecursionError: maximum recursion depth exceeded')
@@ -33,8 +34,8 @@ def test_the_graders_own_failure_on_a_submission_is_its_row_only(tmp_path, monke
 def test_once_stopped_no_student_is_begun(tmp_path):
     place = cli.Place([], isolated=False, jobs=1)
     place.stopping.set()
-    with pytest.raises(cli.Stopped):
-        cli.grade_student(Student('a1', 'Ann', 'A', None), rubrics.load(RUBRIC),
+    with pytest.raises(driver.Stopped):
+        driver.grade(Student('a1', 'Ann', 'A', None), rubrics.load(RUBRIC),
                           str(tmp_path / 'out'), place)
     assert not os.path.exists(tmp_path / 'out')
 
@@ -44,7 +45,7 @@ def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_g
     def full(*_):
         raise OSError(28, 'No space left on device')
     before = signal.getsignal(signal.SIGINT)
-    monkeypatch.setattr(cli.reports, 'write_results', full)
+    monkeypatch.setattr(driver.reports, 'write_results', full)
     args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
                           '--no-sandbox'])
     students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
@@ -57,23 +58,26 @@ def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_g
 
 
 def test_a_ctrl_c_while_a_picture_is_painted_keeps_its_row_once(tmp_path, monkeypatch, capsys):
-    """The stop waits for the picture, then stops the class: the row painted
-    is kept, painted and printed once (it was left out of the rows, then
-    painted and printed again by the loop after the stop)."""
+    """A picture is painted in its student's thread, which no signal
+    interrupts: the stop waits for it, then stops the class; the row painted
+    is kept, and printed once."""
     painted = []
 
-    def paint_and_press_ctrl_c(out, row, facts):
-        painted.append(row.id)
+    def paint_and_press_ctrl_c(out, student_id, facts):
+        painted.append(student_id)
         if len(painted) == 1:
             os.kill(os.getpid(), signal.SIGINT)     # lands mid-paint, as a key press would
-        return row
-    monkeypatch.setattr(cli, 'draw_picture', paint_and_press_ctrl_c)
+            time.sleep(0.5)                         # the main thread takes it meanwhile
+        painted.append('done')
+        return 'drawing.png'
+    monkeypatch.setattr(driver.reports, 'picture', paint_and_press_ctrl_c)
     args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
                           '--no-sandbox'])
     students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
     rows, stopped = cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [],
                                   args)
-    assert stopped == 'SIGINT' and painted.count('a1') == 1 and rows[0].id == 'a1'
+    assert stopped == 'SIGINT' and painted == ['a1', 'done'] and [r.id for r in rows] == ['a1']
+    assert rows[0].picture == 'drawing.png'
     assert capsys.readouterr().out.count('a1 Ann:') == 1
 
 

@@ -2,6 +2,7 @@
 drew it, every turtle's in its own colour and width, on the canvas's own
 colour, and only the letters read drawn over it. Read back pixel by pixel."""
 import os
+import threading
 
 os.environ.setdefault('QT_QPA_PLATFORM', 'offscreen')
 from PyQt5.QtGui import QColor, QImage  # noqa: E402
@@ -53,3 +54,28 @@ def test_only_the_letters_given_are_drawn_over_the_ink(tmp_path):
         return sum(colour_at(image, x, y) == (0, 0, 0) for x in right_half[::2]
                    for y in range(45, image.height() - 15, 2))
     assert black_in_right(a) == 0 < black_in_right(b)   # the letter's outline, black under white
+
+
+def test_pictures_painted_in_several_threads_at_once_are_those_painted_in_the_main_one(tmp_path):
+    """The class grader paints each student's picture in the student's own
+    thread, two or more at once (--jobs): Qt paints a QImage, text too, off
+    its main thread once its application is made in the main one."""
+    from PyQt5.QtGui import QFontDatabase
+
+    from turtle_letters.grading.picture import application
+    application()
+    assert QFontDatabase.supportsThreadedFontRendering()
+    strokes, looks = [[(2.0, 2.0), (2.0, 5.0), (3.5, 2.0)]], [(*GREEN, 3)]
+    letters = [('L', [[(2.5, 5.0), (2.5, 2.0), (3.5, 2.0)]])]
+    main = str(tmp_path / 'main.png')
+    draw_ink(main, strokes, looks, BACKGROUND, letters, 'an L read, in words')
+    paths = [str(tmp_path / f'thread{i}.png') for i in range(4)]
+    threads = [threading.Thread(target=draw_ink, args=(path, strokes, looks, BACKGROUND,
+                                                       letters, 'an L read, in words'))
+               for path in paths]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    expected = QImage(main)
+    assert all(QImage(path) == expected for path in paths)

@@ -1,0 +1,129 @@
+"""One student, from the folder they handed in to their row, stage by stage:
+
+    find     submission.find      the lab's package in the folder
+    run      session.run          built, launched on the grader's world, P typed, watched
+    observe  observations.of_run  the drawing in what the grader's simulator recorded
+    read     reading              the letters in its ink: the strokes, then OCR
+    alone    session.alone        executables started together that drew nothing of
+                                  the letters, each run alone in a fresh world (a TA's try)
+    score    rubric.grade         the points
+    write    reports.write_student  results.json, log.txt and the picture
+
+Each stage's failure is a value the next ones carry (a Step, a problem in
+Facts), and the row says it. The grader's own failure on a submission
+becomes that student's row, its traceback in their log.txt, never the
+class's end. Nothing here knows of the others graded at once: `place`
+(cli.Place) gives a sandbox and says whether grading was stopped.
+"""
+import time
+import traceback
+
+from ..isolation.files import shown
+from ..reading.ocr import read_text
+from ..reading.recognition import read_row
+from . import observations as seen
+from . import reports, rubric as rubrics, session, submission
+from .roster import Student
+
+MAX_ALONE = 4           # executables a TA tries each alone, at most
+
+
+class Stopped(Exception):
+    """Grading was stopped (Ctrl-C, SIGTERM) before this student was done."""
+
+
+def grade(student: Student, rubric, out, place, warning=''):
+    """The student's (row, facts), their files written; Stopped if grading
+    stops first."""
+    if place.stopping.is_set():
+        raise Stopped()
+    started = time.monotonic()
+    with place.grading(student.id):
+        facts, run, notes, error = _facts_or_failure(student, rubric, place)
+    try:
+        row = reports.Row(student.id, student.name, student.expected,               # score
+                          rubrics.drawn_text(facts), rubrics.grade(facts, rubric),
+                          time.monotonic() - started,
+                          reports.leaderboard(facts, run.cpu_pct if run else None), None,
+                          '; '.join(filter(None, [warning] + notes)))
+        return reports.write_student(out, row, facts, _log(run, facts, notes, error)), facts
+    except Exception as e:      # the grader failed even there (no space left): the row says so
+        facts = failed(student, e)
+        return reports.Row(student.id, student.name, student.expected, '',
+                           rubrics.grade(facts, rubric), 0.0, [], None), facts
+
+
+def _log(run, facts, notes, error):
+    """log.txt's sections: (title, text)."""
+    sections = run.log if run else [('submission', facts.problem)]
+    sections += [('left out of the submission', '\n'.join(notes))] if notes else []
+    return sections + ([("the grader's own error", error)] if error else [])
+
+
+def _facts_or_failure(student, rubric, place):
+    """(facts, run, notes, the grader's own error or '')."""
+    try:
+        return _facts(student, rubric, place) + ('',)
+    except Stopped:
+        raise
+    except Exception as e:      # whatever the submission made the grader meet
+        if place.stopping.is_set():
+            raise Stopped() from None
+        return failed(student, e), None, [], traceback.format_exc()
+
+
+def _facts(student, rubric, place):
+    """(facts, run, what of the submission was left out): the stages that
+    run the submission."""
+    if student.folder is None:
+        return rubrics.Facts.never_ran(student.expected, 'no submission'), None, []
+    package = submission.find(student.folder)                               # find
+    if package.problem:
+        return rubrics.Facts.never_ran(student.expected, package.problem), None, package.notes
+    with place.sandbox() as box:
+        run = session.run(package, rubric.limits, box)                      # run
+        facts = observed(student.expected, run, rubric)                     # observe, read
+        facts, run = each_alone(student.expected, rubric, box, facts, run)  # alone
+    if box.stopped:
+        raise Stopped()
+    return facts, run, package.notes
+
+
+def observed(expected, run, rubric):
+    """The facts of one run: its steps, its drawing, the letters read in it."""
+    drawing = seen.of_run(run, rubric.limits.settle)
+    readings, ocr = read(drawing, expected)
+    return rubrics.Facts.observed(expected, run, drawing, readings, ocr)
+
+
+def read(drawing, expected):
+    """(the strokes' readings, OCR's or None): OCR, the slower reader, is
+    asked only where the strokes do not read what was expected."""
+    if drawing is None or not drawing.strokes:
+        return [], None
+    readings = read_row(drawing.strokes, expected)
+    if rubrics.drawn(readings) == expected:
+        return readings, None
+    return readings, read_text(drawing.strokes, expected)
+
+
+def each_alone(expected, rubric, box, facts, run):
+    """A TA's try: executables started together (no launch file) that did
+    not draw the letters run each alone in a fresh world, the first
+    MAX_ALONE of them, until one does; the best (facts, run) kept."""
+    first, best = run, rubrics.grade(facts, rubric).score
+    for name in first.executables[:MAX_ALONE] if len(first.executables) > 1 else []:
+        if box.stopped or len(rubrics.credited(facts)) == len(expected):
+            break
+        tried = session.alone(first, name, rubric.limits, box)
+        tried_facts = observed(expected, tried, rubric)
+        score = rubrics.grade(tried_facts, rubric).score
+        if score > best:
+            facts, run, best = tried_facts, tried, score
+    return facts, run
+
+
+def failed(student, error):
+    """The facts of a submission the grader itself failed on."""
+    problem = f'the grader failed on this submission: {type(error).__name__}: {error}'
+    return rubrics.Facts.never_ran(student.expected, shown(problem))
