@@ -12,7 +12,7 @@ import time
 
 from support.children import readable_env
 
-# turtle_letters.isolation.sandbox.USER(S): the submissions' users, then their worlds' (world.py)
+# turtle_letters.isolation.sandbox.USER(S): the submissions' users, then the grader's beside them
 SANDBOX_USERS = range(2000000000, 2000000000 + 2 * 256)
 CGROUPS = '/sys/fs/cgroup'
 

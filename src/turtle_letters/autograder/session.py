@@ -1,44 +1,29 @@
 """One submission run as the lab runs it, in its sandbox: the package built
 in a workspace of its own over this one, its launch file started with
 roslaunch in a pseudo-terminal against the grader's own master and
-simulator (world.py), P and Enter typed for its talker, and the drawing
+simulator, with its watcher (world.py's Lab), P and Enter typed for its talker, and the drawing
 watched from the launch on, until every turtle stands still. What happened
 is a Run, for the rubric to score; nothing here decides points.
 """
 import itertools
-import math
 import os
-import pty
 import re
-import shutil
 import signal
 import subprocess
 import tempfile
-import threading
 import time
 from typing import NamedTuple
 from xml.sax.saxutils import quoteattr
 
+from ..isolation.sandbox import Sandbox
 from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
-from .processes import ControllerCpu, JsonLines, Reader
-from .reports import plain
+from .processes import ControllerCpu, Reader
 from .rubric import Limits
-from ..isolation.sandbox import GiB, Sandbox
 from .submission import MAX_NODES, Package, copy, made_executable, python_scripts, scripts
-from .world import GradingWorld, course_environment, stand_in, stand_in_started
+from .world import Lab, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
-STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
-MAX_EVENTS = 100000         # events kept of a run (a lab's run has about 20,000)
-# What the watcher, run as root, may hold: rospy reads a message of any
-# length (up to 4 GiB) before it looks at it (it idles at about 40 MiB).
-WATCHER_LIMITS = {
-    'memory': (GiB // 2, lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's "
-                                   f"watcher (a message on /chatter that large)"),
-    'processes': (64, lambda n: f"process limit of {n} reached by the grader's watcher"),
-    'cpu': (math.inf, lambda n: ''),
-}
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
                  'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
@@ -123,111 +108,6 @@ def build(box, limits):
                     time.monotonic() - started), text
     return Step(True, f'built in {time.monotonic() - started:.1f} s',
                 time.monotonic() - started), text
-
-
-class Terminal:
-    """roslaunch with a pseudo-terminal for its stdin and output, as in a
-    terminal window; what it prints is kept."""
-
-    def __init__(self, argv, box):
-        self.box = box          # where nothing else ends its nodes, Ctrl-C first
-        self.master, slave = pty.openpty()
-        try:
-            self.process = box.started(subprocess.Popen(argv, stdin=slave, stdout=slave,
-                                                        stderr=slave, start_new_session=True))
-        except BaseException:
-            os.close(self.master)
-            raise
-        finally:
-            os.close(slave)
-        self.reader = Reader(os.dup(self.master))   # the reader's own: it closes it
-        self.output = self.reader.output
-
-    def type(self, keys):
-        os.write(self.master, keys)
-
-    def text(self, since=0):
-        """What the terminal showed (from byte `since` on), as plain lines."""
-        return plain(self.output.text(since))
-
-    def stop(self):
-        gentle = not (self.box.runs_as_its_user() or self.box.stopped)
-        if gentle and self.process.poll() is None:
-            self.process.send_signal(signal.SIGINT)
-            try:
-                self.process.wait(timeout=STOP_SECONDS)
-            except subprocess.TimeoutExpired:
-                pass
-        if self.process.poll() is None:
-            self.process.kill()
-        self.process.wait()
-        os.close(self.master)       # the reader reads its own copy to its end
-        self.reader.stop()
-
-
-class Watcher:
-    """watch.py in the submission's network namespace: its events, as they
-    come. Its ROS home and its errors are in a folder of the grader's own,
-    which the submission cannot reach."""
-
-    def __init__(self, box):
-        self.cgroup = box.limited('a', WATCHER_LIMITS) if box.isolated else None
-        self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
-        env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
-                   ROS_HOME=self.home, PYTHONUNBUFFERED='1')
-        env.pop('ROS_LOG_DIR', None)
-        self.errors = open(os.path.join(self.home, 'errors.txt'), 'w+')
-        # Its working folder is its own: `-m` imports from there first, as
-        # root, and the folder the grader was started in may hold a json.py.
-        try:
-            joining = self.cgroup.joining() if self.cgroup is not None else []
-            self.process = box.started(subprocess.Popen(
-                joining + box.beside(['/usr/bin/python3', '-m', 'turtle_letters.autograder.watch']),
-                stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
-                cwd=self.home, start_new_session=True))
-        except BaseException:
-            self.errors.close()
-            shutil.rmtree(self.home, ignore_errors=True)
-            if self.cgroup is not None:
-                self.cgroup.remove()
-            raise
-        self.lines = JsonLines(MAX_EVENTS, lambda e: isinstance(e, dict) and 'kind' in e)
-        self.events = self.lines.items      # as they come
-        threading.Thread(target=self.lines.read, args=(self.process.stdout,), daemon=True).start()
-
-    @property
-    def full(self):
-        return self.lines.full
-
-    def overflowed(self):
-        """Why the grader stopped watching, or '': a run's events are capped,
-        and what the watcher may hold (rospy takes a message of any length)."""
-        if self.lines.full:
-            return (f'more than {MAX_EVENTS} messages for the grader to watch (poses, '
-                    f'/chatter): it stopped watching')
-        return self.cgroup.reached() if self.cgroup is not None else ''
-
-    def publish_p(self):
-        """Publishes "P" on /chatter; False when the watcher is gone (a node
-        of the submission took its name, or shut it down over XML-RPC)."""
-        try:
-            self.process.stdin.write(b'P\n')
-            self.process.stdin.flush()
-            return True
-        except OSError:         # BrokenPipeError: it ended
-            return False
-
-    def stop(self):
-        """Stops it; what it said on stderr, if anything (its own failure)."""
-        self.process.kill()
-        self.process.wait()
-        if self.cgroup is not None:
-            self.cgroup.remove()
-        self.errors.seek(max(0, self.errors.seek(0, os.SEEK_END) - 4000))
-        said = self.errors.read()
-        self.errors.close()
-        shutil.rmtree(self.home, ignore_errors=True)
-        return said
 
 
 def first_error(text):
@@ -354,61 +234,37 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
         path, result.executables = generated_launch(box, result.package, only)
         launch = [path]
         result.generated = ', '.join(result.executables) or 'none'
-    world = GradingWorld(box)
+    # Sourced first: the stand-in's workspace goes before the package's own.
+    # Unbuilt, the package is found in its source folder, as rosrun finds scripts.
+    setup = ('export ROS_PACKAGE_PATH="$0/ws/src:$ROS_PACKAGE_PATH"' if unbuilt else
+             'source "$0/ws/devel/setup.bash"')
+    command = ['bash', '-c', f'{setup} && '
+               'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && shift && '
+               'exec roslaunch "$@"', work, os.path.join(work, 'stand_in')] + launch
+    lab = Lab(box, box.inside(command, _env(work, box.master_uri, box.isolated)))
     try:
-        world.start()
-        # Sourced first: the stand-in's workspace goes before the package's own.
-        # Unbuilt, the package is found in its source folder, as rosrun finds scripts.
-        setup = ('export ROS_PACKAGE_PATH="$0/ws/src:$ROS_PACKAGE_PATH"' if unbuilt else
-                 'source "$0/ws/devel/setup.bash"')
-        command = ['bash', '-c', f'{setup} && '
-                   'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && shift && '
-                   'exec roslaunch "$@"', work, os.path.join(work, 'stand_in')] + launch
-        terminal = Terminal(box.inside(command, _env(work, box.master_uri, box.isolated)), box)
-    except BaseException:
-        world.stop()
-        raise
-    try:
-        watcher = Watcher(box)
-    except BaseException:
-        terminal.stop()
-        world.stop()
-        raise
-    try:
-        _watch(terminal, watcher, world, limits, result,
-               lambda: watching(terminal.process, box, watcher, world))
+        _watch(lab, limits, result)
     finally:
         result.finished = time.monotonic()
-        result.limit = '; '.join(filter(None, [box.reached(), watcher.overflowed(),
-                                               world.overflowed()]))
-        result.broken = world.broken()
-        terminal.stop()
-        world.stop()
-        watcher_said = watcher.stop()
-        result.events, result.record = list(watcher.events), list(world.events)
-        result.log.append((f'roslaunch {" ".join(launch)}', terminal.text()))
-        result.log.append(("the grader's master and simulator", world.log_tail()))
+        result.limit, result.broken = lab.limit(), lab.world.broken()
+        watcher_said = lab.stop()
+        result.events, result.record = list(lab.watcher.events), list(lab.world.events)
+        result.log.append((f'roslaunch {" ".join(launch)}', lab.terminal.text()))
+        result.log.append(("the grader's master and simulator", lab.world.log_tail()))
         if watcher_said.strip():
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
-    _explain(result, terminal, work)
+    _explain(result, lab.terminal, work)
     if result.generated and result.launch is not None:
         result.launch = Step(False, f'no launch file: the grader started its executables '
                                     f'({result.generated}) as a launch file would')
 
 
-def watching(launch, box, watcher, world):
-    """Whether the run is still worth watching: roslaunch runs, the sandbox
-    is within its limits and not stopped, and the watcher's events and the
-    simulator's record are within theirs and whole."""
-    return launch.poll() is None and not box.reached() and not box.stopped \
-        and not watcher.full and not world.full and not world.broken()
-
-
-def _watch(terminal, watcher, world, limits, result, alive):
+def _watch(lab, limits, result):
     """Launched at `started`: up once a node listens on /chatter or a turtle
     moves; P typed after the turtle stood for limits.stand; the drawing
     watched from the launch (a turtle that did not wait) or the trigger."""
-    events, record = watcher.events, world.events
+    terminal, watcher, alive = lab.terminal, lab.watcher, lab.going
+    events, record = watcher.events, lab.world.events
     started = time.monotonic()
     if not wait_until(lambda: _listening(events) or seen.moved(record, started),
                       limits.launch, alive):

@@ -1,6 +1,10 @@
-"""The world a submission is graded on, and the grader's own: a ROS master
+"""One run's lab (Lab): the world a submission is graded on, the
+submission's roslaunch in a terminal (Terminal), and the grader's watcher
+beside them (Watcher, running watch.py), with one stop for all three.
+
+The world is the grader's own: a ROS master
 (rosmaster) and the bundled simulator, started beside the sandbox in its
-network namespace, as a user the submission is not (the sandbox's world_user).
+network namespace, as a user the submission is not (the sandbox's beside_user).
 The submission's nodes reach them over the network, as ROS lets them; the
 simulator's account of what it drew (sim/.../record.py) comes to the grader
 over a pipe, which nothing in the sandbox can reach. That account is the
@@ -10,18 +14,20 @@ A turtlesim_node the submission's launch file starts finds STAND_IN first:
 it stays up as long as the launch wants, draws nothing, and registers no
 node, so it never displaces the grader's simulator.
 """
-import itertools
 import math
 import os
+import pty
+import shutil
 import signal
 import subprocess
+import tempfile
 import threading
 import time
 
-from .processes import JsonLines
+from .processes import JsonLines, Reader
+from .reports import plain
 from ..isolation.sandbox import GiB, closed_folder
 
-_WORLDS = itertools.count(1)
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
 MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
 MAX_TURTLES = 64                # turtles the grader's simulator holds at once (~max_turtles)
@@ -33,6 +39,16 @@ LIMITS = {
                               f"master and simulator (what the submission gave them to hold)"),
     'processes': (256, lambda n: f"process limit of {n} reached by the grader's master and "
                                  f"simulator"),
+    'cpu': (math.inf, lambda n: ''),
+}
+STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
+MAX_EVENTS = 100000         # events kept of a run (a lab's run has about 20,000)
+# What the watcher, run as root, may hold: rospy reads a message of any
+# length (up to 4 GiB) before it looks at it (it idles at about 40 MiB).
+WATCHER_LIMITS = {
+    'memory': (GiB // 2, lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's "
+                                   f"watcher (a message on /chatter that large)"),
+    'processes': (64, lambda n: f"process limit of {n} reached by the grader's watcher"),
     'cpu': (math.inf, lambda n: ''),
 }
 UP_SECONDS = 30.0               # for the master and the simulator to come up
@@ -134,8 +150,7 @@ class GradingWorld:
     simulator's record as it comes, one dict a line ('k', 't', ...)."""
 
     def __init__(self, box):
-        self.box, self.user = box, box.world_user     # never a submission's
-        self.home = os.path.join(box.scratch, f'world{next(_WORLDS)}')    # a fallback's is new
+        self.box, self.user, self.home = box, box.beside_user, None   # never a submission's
         self.record = JsonLines(MAX_RECORD, lambda e: isinstance(e, dict) and 'k' in e and 't' in e)
         self.events = self.record.items     # the record as it comes
         self.master = self.simulator = self.reader = self.cgroup = None
@@ -156,8 +171,7 @@ class GradingWorld:
         if not os.path.isdir(SIM_FOLDER):
             raise WorldError(f'the bundled simulator is not at {SIM_FOLDER}: grade from the '
                              f"package's checkout (make build), not from an install space")
-        os.mkdir(self.home, 0o700)
-        os.chown(self.home, self.user, self.user)
+        self.home = self.box.folder_beside()
         if self.box.isolated:
             self.cgroup = self.box.limited('w', LIMITS)     # removed with the box too
         log = open(os.path.join(self.home, 'world.log'), 'wb')
@@ -220,6 +234,8 @@ class GradingWorld:
         return self.cgroup.reached() if self.cgroup is not None else ''
 
     def log_tail(self, size=2000):
+        if self.home is None:
+            return ''
         try:
             with open(os.path.join(self.home, 'world.log'), 'rb') as f:
                 f.seek(0, os.SEEK_END)
@@ -233,11 +249,11 @@ class GradingWorld:
         namespace); the record read to its end."""
         # Their user's processes first: each bubblewrap reaps its own and
         # ends, and none is left for init to reap (a slow init shows them).
-        self.box.kill_world()
+        self.box.stop_beside()
         for process in (self.simulator, self.master):
             if process is None:
                 continue
-            try:       # outside a sandbox it may run as the grader, whom kill_world spares
+            try:       # outside a sandbox it may run as the grader, whom stop_beside spares
                 process.wait(timeout=5 if self.box.isolated else 0.2)
             except subprocess.TimeoutExpired:
                 try:
@@ -249,3 +265,147 @@ class GradingWorld:
             self.reader.join(timeout=5)
         if self.cgroup is not None:
             self.cgroup.remove()
+
+
+class Terminal:
+    """roslaunch with a pseudo-terminal for its stdin and output, as in a
+    terminal window; what it prints is kept."""
+
+    def __init__(self, argv, box):
+        self.box = box          # where nothing else ends its nodes, Ctrl-C first
+        self.master, slave = pty.openpty()
+        try:
+            self.process = box.started(subprocess.Popen(argv, stdin=slave, stdout=slave,
+                                                        stderr=slave, start_new_session=True))
+        except BaseException:
+            os.close(self.master)
+            raise
+        finally:
+            os.close(slave)
+        self.reader = Reader(os.dup(self.master))   # the reader's own: it closes it
+        self.output = self.reader.output
+
+    def type(self, keys):
+        os.write(self.master, keys)
+
+    def text(self, since=0):
+        """What the terminal showed (from byte `since` on), as plain lines."""
+        return plain(self.output.text(since))
+
+    def stop(self):
+        gentle = not (self.box.runs_as_its_user() or self.box.stopped)
+        if gentle and self.process.poll() is None:
+            self.process.send_signal(signal.SIGINT)
+            try:
+                self.process.wait(timeout=STOP_SECONDS)
+            except subprocess.TimeoutExpired:
+                pass
+        if self.process.poll() is None:
+            self.process.kill()
+        self.process.wait()
+        os.close(self.master)       # the reader reads its own copy to its end
+        self.reader.stop()
+
+
+class Watcher:
+    """watch.py in the submission's network namespace: its events, as they
+    come. Its ROS home and its errors are in a folder of the grader's own,
+    which the submission cannot reach."""
+
+    def __init__(self, box):
+        self.cgroup = box.limited('a', WATCHER_LIMITS) if box.isolated else None
+        self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
+        env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
+                   ROS_HOME=self.home, PYTHONUNBUFFERED='1')
+        env.pop('ROS_LOG_DIR', None)
+        self.errors = open(os.path.join(self.home, 'errors.txt'), 'w+')
+        # Its working folder is its own: `-m` imports from there first, as
+        # root, and the folder the grader was started in may hold a json.py.
+        try:
+            joining = self.cgroup.joining() if self.cgroup is not None else []
+            self.process = box.started(subprocess.Popen(
+                joining + box.beside(['/usr/bin/python3', '-m', 'turtle_letters.autograder.watch']),
+                stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
+                cwd=self.home, start_new_session=True))
+        except BaseException:
+            self.errors.close()
+            shutil.rmtree(self.home, ignore_errors=True)
+            if self.cgroup is not None:
+                self.cgroup.remove()
+            raise
+        self.lines = JsonLines(MAX_EVENTS, lambda e: isinstance(e, dict) and 'kind' in e)
+        self.events = self.lines.items      # as they come
+        threading.Thread(target=self.lines.read, args=(self.process.stdout,), daemon=True).start()
+
+    @property
+    def full(self):
+        return self.lines.full
+
+    def overflowed(self):
+        """Why the grader stopped watching, or '': a run's events are capped,
+        and what the watcher may hold (rospy takes a message of any length)."""
+        if self.lines.full:
+            return (f'more than {MAX_EVENTS} messages for the grader to watch (poses, '
+                    f'/chatter): it stopped watching')
+        return self.cgroup.reached() if self.cgroup is not None else ''
+
+    def publish_p(self):
+        """Publishes "P" on /chatter; False when the watcher is gone (a node
+        of the submission took its name, or shut it down over XML-RPC)."""
+        try:
+            self.process.stdin.write(b'P\n')
+            self.process.stdin.flush()
+            return True
+        except OSError:         # BrokenPipeError: it ended
+            return False
+
+    def stop(self):
+        """Stops it; what it said on stderr, if anything (its own failure)."""
+        self.process.kill()
+        self.process.wait()
+        if self.cgroup is not None:
+            self.cgroup.remove()
+        self.errors.seek(max(0, self.errors.seek(0, os.SEEK_END) - 4000))
+        said = self.errors.read()
+        self.errors.close()
+        shutil.rmtree(self.home, ignore_errors=True)
+        return said
+
+
+class Lab:
+    """One run's lab as the grader sets it up in `box`: its world (master
+    and simulator), the submission's roslaunch (`argv`) in a terminal, and
+    the watcher, started in that order; `stop` ends whatever of them was
+    started, however far the start came."""
+
+    def __init__(self, box, argv):
+        self.box, self.world = box, GradingWorld(box)
+        self.terminal = self.watcher = None
+        try:
+            self.world.start()
+            self.terminal = Terminal(argv, box)
+            self.watcher = Watcher(box)
+        except BaseException:
+            self.stop()
+            raise
+
+    def going(self):
+        """Whether the run is still worth watching, the one place a run asks:
+        roslaunch runs, the sandbox is within its limits and not stopped,
+        the watcher's events and the simulator's record within theirs and whole."""
+        return self.terminal.process.poll() is None and not self.box.reached() and \
+            not self.box.stopped and not self.watcher.full and not self.world.full and \
+            not self.world.broken()
+
+    def limit(self):
+        """The limits reached, of the sandbox, the watcher and the world, in words, or ''."""
+        return '; '.join(filter(None, [self.box.reached(), self.watcher.overflowed(),
+                                       self.world.overflowed()]))
+
+    def stop(self):
+        """roslaunch ended (Ctrl-C first), then the world, then the watcher:
+        what the watcher said on stderr ('' if none, or never started)."""
+        if self.terminal is not None:
+            self.terminal.stop()
+        self.world.stop()
+        return self.watcher.stop() if self.watcher is not None else ''

@@ -2,8 +2,11 @@
 namespace of its own with loopback only (so the master the grader runs
 for it is its own, on the usual port), and in it Debian's bubblewrap with the rules in RULES, run as
 an unprivileged user of its own (as_user), in a cgroup of its own with
-LIMITS and the cores it was given. The grader's watcher (watch.py) joins
-the namespace, not the sandbox.
+LIMITS and the cores it was given. Beside it, in its namespace but not
+its sandbox, the grader may run processes of its own (`beside`): as
+itself, or as a user of the grader's that is never the submission's
+(`beside_user`), each in a folder of its own (`folder_beside`); `stop`
+ends them with the rest. The sandbox knows nothing of what they are.
 
 `problem()` tries the sandbox out and says in one line what keeps it from
 being made here (no root for the namespace, no bubblewrap, no cgroup with
@@ -53,8 +56,8 @@ RULES = [
     (['--new-session'], 'cannot type into the terminal the grader runs in'),
 ]
 
-# What a user of the grader's beside the sandbox sees (world.py's master and
-# simulator): the system read-only, and no one's home, the grader's included.
+# What a user of the grader's beside the sandbox sees: the system
+# read-only, and no one's home, the grader's included.
 BESIDE_RULES = [
     (['--ro-bind', '/', '/'], 'the system, read-only'),
     (['--dev', '/dev'], 'a /dev of its own (/dev/null writable)'),
@@ -186,7 +189,7 @@ def _namespace_pids(namespace):
 
 def kill_user(user, pids=_all_pids):
     """Kills every process of `user` among `pids()` (a submission's outside
-    a sandbox, or a world's: double forks and setsid included, as no process
+    a sandbox, or those beside it: double forks and setsid included, as no process
     of it can change user)."""
     killed = set()
     for _ in range(100):
@@ -394,24 +397,22 @@ class Sandbox:
     """A network namespace with loopback up, a cgroup with LIMITS, a work
     folder, and commands to run in them: `inside` for the submission's, in
     bubblewrap as its own user; `beside` for the grader's. Its work folder,
-    /tmp and /dev/shm are on a tmpfs of DISK bytes of its own, gone with it:
-    no submission can fill the machine's disk.
-
-    slot: which of the students graded at once (its user is USER + slot);
-    cpu: the core it runs on (None: any of the grader's)."""
+    /tmp and /dev/shm are on a tmpfs of DISK bytes of its own, gone with it.
+    slot: which of those graded at once (its user is USER + slot); cpu: its core."""
 
     def __init__(self, hidden=(), isolated=True, cpu=None, limits=None, slot=0):
         self.isolated, self.limits = isolated, limits or LIMITS
         self.cpus = [cpu] if cpu is not None else None
         self.user = USER + slot % USERS
-        self.world_user = self.user + USERS     # the grader's master and simulator's (world.py)
+        self.beside_user = self.user + USERS    # the grader's processes beside it run as this
+        self._folders_beside = itertools.count(1)
         self.hidden = [os.path.abspath(h) for h in hidden if os.path.exists(h)]
         self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
         port = MASTER_PORT if isolated else _free_port()
         self.master_uri = f'http://127.0.0.1:{port}'
         self.cgroup = self.scratch = self.work = None
         self.stopped = False    # grading was stopped (Ctrl-C): what runs in it is ended
-        self.sessions, self.others = [], []     # process groups started for it; cgroups beside it
+        self.sessions, self.others = [], []     # process groups started for it; cgroups beside
 
     def __enter__(self):
         self.scratch = tempfile.mkdtemp(prefix='turtle_letters_sandbox_')
@@ -422,7 +423,7 @@ class Sandbox:
             return self
         try:
             _writable_space(self.scratch, self.user)
-            os.chmod(self.scratch, 0o711)    # the grader's world (world.py) keeps a folder here
+            os.chmod(self.scratch, 0o711)    # the folders beside it are here
             _run(['ip', 'netns', 'add', self.namespace])
             _run(['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up'])
             self.cgroup = Cgroup(self.namespace, self.limits, self.cpus)
@@ -431,8 +432,7 @@ class Sandbox:
             raise
         return self
 
-    def runs_as_its_user(self):
-        """Whether its commands run as its user: in a sandbox, or outside one as root."""
+    def runs_as_its_user(self):     # in a sandbox, or outside one as root
         return self.isolated or os.geteuid() == 0
 
     def hand_over(self):
@@ -440,16 +440,23 @@ class Sandbox:
         if self.runs_as_its_user():
             _run(['chown', '-R', '-h', f'{self.user}:{self.user}', self.work])
 
-    def kill_world(self):
-        """Kills its world's processes (world.py): those in its namespace, as
-        another grader's sandbox of the same slot has the same world user."""
-        kill_user(self.world_user, lambda: _namespace_pids(self.namespace) if self.isolated
+    def folder_beside(self):
+        """A new folder for processes beside it, beside_user's alone, gone with it."""
+        folder = os.path.join(self.scratch, f'beside{next(self._folders_beside)}')
+        os.mkdir(folder, 0o700)
+        os.chown(folder, self.beside_user, self.beside_user)
+        return folder
+
+    def stop_beside(self):
+        """Ends beside_user's processes: those in its namespace, as another
+        grader's sandbox of the same slot has the same user beside it."""
+        kill_user(self.beside_user, lambda: _namespace_pids(self.namespace) if self.isolated
                   else _all_pids())
 
     def __exit__(self, *_):
         for cgroup in filter(None, [self.cgroup] + self.others):
             cgroup.remove()
-        self.kill_world()
+        self.stop_beside()
         if not self.isolated and self.runs_as_its_user():     # no PID namespace: by its user
             kill_user(self.user)
         if self.isolated:
@@ -468,7 +475,7 @@ class Sandbox:
     def stop(self):
         """Ends everything it runs, for good (the grader was stopped)."""
         self.stopped = True
-        self.kill_world()       # first: a session's bubblewrap reaps its user's processes
+        self.stop_beside()      # first: a session's bubblewrap reaps its user's processes
         for pid in self.sessions:
             with contextlib.suppress(OSError):
                 os.killpg(pid, signal.SIGKILL)
@@ -486,10 +493,7 @@ class Sandbox:
         """The words of the first limit the submission reached, or ''."""
         if self.cgroup is None:
             return ''
-        space = os.statvfs(self.scratch)
-        if space.f_bavail * space.f_frsize < FULL or space.f_favail == 0:
-            return DISK[1](DISK[0])
-        return self.cgroup.reached()
+        return DISK[1](DISK[0]) if _full(self.scratch) else self.cgroup.reached()
 
     def beside(self, argv, user=None, readable=(), writable=()):
         """`argv` in its network namespace, not its sandbox: as the grader,
@@ -509,6 +513,12 @@ class Sandbox:
             [option for name, value in sorted(env.items()) for option in ('--setenv', name, value)]
         return self.cgroup.joining() + ['ip', 'netns', 'exec', self.namespace, 'bwrap'] + \
             rules + ['--'] + as_user(self.user) + list(argv)
+
+
+def _full(folder):
+    """Whether the space `folder` is on is full: under FULL bytes or no file left."""
+    space = os.statvfs(folder)
+    return space.f_bavail * space.f_frsize < FULL or space.f_favail == 0
 
 
 def _pinned(cpus):

@@ -7,29 +7,74 @@ from types import SimpleNamespace
 
 import pytest
 
-from turtle_letters.autograder.session import first_error, generated_launch, prepare, watching
+from turtle_letters.autograder import world
+from turtle_letters.autograder.session import first_error, generated_launch, prepare
 from turtle_letters.autograder.submission import find
+from turtle_letters.autograder.world import Lab
 
 
-def parts(**changed):
-    launch = SimpleNamespace(poll=lambda: changed.get('ended'))
-    box = SimpleNamespace(reached=lambda: changed.get('limit', ''),
-                          stopped=changed.get('stopped', False))
-    watcher = SimpleNamespace(full=changed.get('events_full', False))
-    world = SimpleNamespace(full=changed.get('record_full', False),
-                            broken=lambda: changed.get('broken', ''))
-    return launch, box, watcher, world
+def lab_of(**changed):
+    """A Lab of fakes: its sandbox, world, terminal and watcher as `changed` says."""
+    lab = Lab.__new__(Lab)
+    lab.box = SimpleNamespace(reached=lambda: changed.get('limit', ''),
+                              stopped=changed.get('stopped', False))
+    lab.terminal = SimpleNamespace(process=SimpleNamespace(poll=lambda: changed.get('ended')))
+    lab.watcher = SimpleNamespace(full=changed.get('events_full', False))
+    lab.world = SimpleNamespace(full=changed.get('record_full', False),
+                                broken=lambda: changed.get('broken', ''))
+    return lab
 
 
 def test_a_run_in_order_is_watched():
-    assert watching(*parts())
+    assert lab_of().going()
 
 
 @pytest.mark.parametrize('reason', [dict(ended=0), dict(limit='memory limit of 2 GiB reached'),
                                     dict(stopped=True), dict(events_full=True),
                                     dict(record_full=True), dict(broken='shut down')])
 def test_each_reason_alone_ends_the_watch(reason):
-    assert not watching(*parts(**reason))
+    assert not lab_of(**reason).going()
+
+
+class Part:
+    """A fake part of the lab: it says when it was started and stopped."""
+
+    def __init__(self, name, said, fails=False):
+        self.name, self.said, self.fails = name, said, fails
+
+    def __call__(self, *_):         # made, as the Lab makes its terminal and watcher
+        self.said.append(f'{self.name} started')
+        if self.fails:
+            raise OSError(f'{self.name} could not start')
+        return self
+
+    def start(self):                # started, as the Lab starts its world
+        self(None)
+
+    def stop(self):
+        self.said.append(f'{self.name} stopped')
+        return f'{self.name} said this'
+
+
+@pytest.mark.parametrize('failing', [None, 'world', 'terminal', 'watcher'])
+def test_the_lab_stops_what_it_started_in_order_however_far_its_start_came(monkeypatch,
+                                                                          failing):
+    said = []
+    parts = {name: Part(name, said, fails=name == failing)
+             for name in ('world', 'terminal', 'watcher')}
+    monkeypatch.setattr(world, 'GradingWorld', lambda box: parts['world'])
+    monkeypatch.setattr(world, 'Terminal', parts['terminal'])
+    monkeypatch.setattr(world, 'Watcher', parts['watcher'])
+    started = ['world', 'terminal', 'watcher']
+    started = started[:started.index(failing) + 1] if failing else started
+    if failing:
+        with pytest.raises(OSError):
+            Lab(None, ['roslaunch'])
+    else:
+        assert Lab(None, ['roslaunch']).stop() == 'watcher said this'
+    stopped = [name for name in ('terminal', 'world', 'watcher') if name in started]
+    stopped = [n for n in stopped if n != failing or n == 'world']    # the world is always stopped
+    assert said == [f'{n} started' for n in started] + [f'{n} stopped' for n in stopped]
 
 
 def test_a_failed_build_says_its_first_error_in_its_own_words():
