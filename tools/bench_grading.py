@@ -157,7 +157,7 @@ def sandbox_cost(reps=3):
     made = []
     for _ in range(reps):
         started = time.monotonic()
-        with Sandbox() as box:
+        with Sandbox(_caps()) as box:
             subprocess.run(box.inside(['true'], {}), check=True)
         made.append(time.monotonic() - started)
     return dict(times, made_s=statistics.median(made), world=[world_cost() for _ in range(reps)])
@@ -182,12 +182,23 @@ def _user_usage(user):
     return cpu, memory
 
 
+def _limits():
+    """The package rubric's limits, as the grader uses them."""
+    from turtle_letters.autograder.rubric import load
+    return load(os.path.join(os.path.dirname(__file__), '..', 'config', 'rubric.yaml')).limits
+
+
+def _caps():
+    from turtle_letters.autograder.session import caps
+    return caps(_limits())
+
+
 def world_cost():
     """One student's world: seconds to start it, then its idle CPU and memory."""
     from turtle_letters.isolation.sandbox import Sandbox
     from turtle_letters.autograder.world import GradingWorld
-    with Sandbox() as box:
-        world = GradingWorld(box)
+    with Sandbox(_caps()) as box:
+        world = GradingWorld(box, _limits())
         try:
             started = time.monotonic()
             world.start()

@@ -14,7 +14,8 @@ from concurrent.futures import ThreadPoolExecutor
 import pytest
 
 from support.children import readable_env
-from support.grading import container, grade_class, leftovers, sandbox_processes, tree_hash
+from support.grading import (container, grade_class, leftovers, package_caps, sandbox_processes,
+                             tree_hash)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SUBMISSIONS = os.path.join(HERE, 'submissions')
@@ -126,7 +127,7 @@ def test_the_sandbox_is_as_its_rules_say(tmp_path):
     probe = ('id -u; grep CapEff /proc/self/status; ls "$0" | wc -l; touch /usr/x 2>&1; '
              'head -c1 /etc/shadow 2>&1; touch "$1/mine" /tmp/mine && echo wrote; '
              'grep -c tlgrade /proc/self/cgroup; ls /run | wc -l; ls /sys/class/net')
-    with Sandbox(hidden=[SUBMISSIONS]) as box:
+    with Sandbox(package_caps(), hidden=[SUBMISSIONS]) as box:
         seen = subprocess.run(box.inside(['bash', '-c', probe, SUBMISSIONS, box.work],
                                          {'PATH': '/usr/bin:/bin'}),
                               stdout=subprocess.PIPE, universal_newlines=True).stdout.split('\n')
@@ -152,7 +153,7 @@ def test_the_sandbox_shows_a_workspace_in_a_home_but_not_the_home(tmp_path, monk
             with open(path, 'w') as f:
                 f.write('seen\n')
         monkeypatch.setenv('PYTHONPATH', f"{devel}:{os.environ.get('PYTHONPATH', '')}")
-        with Sandbox() as box:
+        with Sandbox(package_caps()) as box:
             seen = subprocess.run(box.inside(['bash', '-c', 'cat "$0/shown.py"; ls -A "$1"',
                                               devel, home], {'PATH': '/usr/bin:/bin'}),
                                   stdout=subprocess.PIPE, universal_newlines=True).stdout

@@ -8,7 +8,7 @@ import subprocess
 
 import pytest
 
-from support.grading import leftovers, sandbox_processes
+from support.grading import leftovers, package_caps, sandbox_processes
 
 pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason='the sandbox needs root')
 FORKS = ('import os, time\n'
@@ -31,10 +31,9 @@ FORKS = ('import os, time\n'
      'disk limit of 1 GiB reached (its files, /tmp and /dev/shm together)'),
 ])
 def test_each_limit_stops_the_sandbox_in_words(command, says):
-    from turtle_letters.isolation.sandbox import LIMITS, Sandbox
-    limits = dict(LIMITS, cpu=(1, LIMITS['cpu'][1]))
+    from turtle_letters.isolation.sandbox import Sandbox
     before = sandbox_processes()
-    with Sandbox(limits=limits) as box:
+    with Sandbox(package_caps()._replace(cpu=1)) as box:
         assert box.reached() == ''
         subprocess.run(box.inside(command, {'PATH': '/usr/bin:/bin'}), timeout=120,
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
@@ -50,7 +49,8 @@ def test_the_core_given_holds_and_two_at_once_are_different_users():
     probe = ('taskset -pc 0-63 $$ >/dev/null 2>&1; grep Cpus_allowed_list /proc/self/status; '
              'id -u')
     before = sandbox_processes()
-    with Sandbox(cpu=0, slot=0) as first, Sandbox(cpu=0, slot=1) as second:
+    with Sandbox(package_caps(), cpu=0, slot=0) as first, \
+            Sandbox(package_caps(), cpu=0, slot=1) as second:
         seen = [subprocess.run(box.inside(['bash', '-c', probe], {'PATH': '/usr/bin:/bin'}),
                                stdout=subprocess.PIPE, universal_newlines=True).stdout.split()
                 for box in (first, second)]

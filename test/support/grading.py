@@ -17,6 +17,19 @@ SANDBOX_USERS = range(2000000000, 2000000000 + 2 * 256)
 CGROUPS = '/sys/fs/cgroup'
 
 
+def package_limits():
+    """The package rubric's limits (config/rubric.yaml), as the grader uses them."""
+    from turtle_letters.autograder.rubric import load
+    return load(os.path.join(os.path.dirname(__file__), '..', '..', 'config',
+                             'rubric.yaml')).limits
+
+
+def package_caps():
+    """The sandbox's caps of the package rubric's limits."""
+    from turtle_letters.autograder.session import caps
+    return caps(package_limits())
+
+
 def tree_hash(top):
     """A hash of every file under `top`: its path, mode and bytes."""
     digest = hashlib.sha256()

@@ -30,7 +30,7 @@ import rospkg
 
 from ..isolation.files import shown
 from ..isolation import sandbox
-from . import driver, reports, rubric as rubrics
+from . import driver, reports, rubric as rubrics, session
 from .roster import RosterError, Student
 from .roster import expected as expected_of
 from .roster import read as read_roster
@@ -81,8 +81,8 @@ class Place:
     graded beside it); the sandboxes running, for `stop` to end them, and
     who is being graded."""
 
-    def __init__(self, hidden, isolated, jobs):
-        self.hidden, self.isolated = hidden, isolated
+    def __init__(self, hidden, isolated, jobs, caps):
+        self.hidden, self.isolated, self.caps = hidden, isolated, caps
         cores = sorted(os.sched_getaffinity(0))
         self.slots = queue.Queue()
         for slot in range(jobs):
@@ -97,7 +97,7 @@ class Place:
         is made and removed under the lock, so that a forced exit finds
         every sandbox whole in `boxes`, never one half made or half gone."""
         slot, cpu = self.slots.get()
-        box = sandbox.Sandbox(self.hidden, self.isolated, cpu, slot=slot)
+        box = sandbox.Sandbox(self.caps, self.hidden, self.isolated, cpu, slot=slot)
         try:
             with self.lock:
                 box.__enter__()
@@ -180,7 +180,7 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     """(every student's row in roster order, `args.jobs` at a time; the
     signal's name if Ctrl-C or SIGTERM stopped it, with only the rows done)."""
     warnings = warnings or {}
-    place = Place(hidden, args.isolated, args.jobs)
+    place = Place(hidden, args.isolated, args.jobs, session.caps(rubric.limits))
     ready_to_paint()
     progress, rows, stopped = Progress(len(students), place), {}, ''
     before = _on_signal(_first_stop(place))     # before any student starts

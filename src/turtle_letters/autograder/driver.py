@@ -25,8 +25,6 @@ from . import observations as seen
 from . import reports, rubric as rubrics, session, submission
 from .roster import Student
 
-MAX_ALONE = 4           # executables a TA tries each alone, at most
-
 
 class Stopped(Exception):
     """Grading was stopped (Ctrl-C, SIGTERM) before this student was done."""
@@ -110,9 +108,9 @@ def read(drawing, expected):
 def each_alone(expected, rubric, box, facts, run):
     """A TA's try: executables started together (no launch file) that did
     not draw the letters run each alone in a fresh world, the first
-    MAX_ALONE of them, until one does; the best (facts, run) kept."""
+    limits.alone of them, until one does; the best (facts, run) kept."""
     first, best = run, rubrics.grade(facts, rubric).score
-    for name in first.executables[:MAX_ALONE] if len(first.executables) > 1 else []:
+    for name in first.executables[:rubric.limits.alone] if len(first.executables) > 1 else []:
         if box.stopped or len(rubrics.credited(facts)) == len(expected):
             break
         tried = session.alone(first, name, rubric.limits, box)

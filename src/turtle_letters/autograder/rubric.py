@@ -11,7 +11,6 @@ from ..reading.recognition import Reading
 from .observations import Drawing, chatter_peak, own_triggers
 from .roster import EXPECTED
 
-LIMITS = ('build', 'launch', 'stand', 'talker', 'start', 'drawing', 'settle')
 CHATTER_FLOOD = 100     # messages a second on /chatter past which the talker floods it
 
 
@@ -20,8 +19,8 @@ class RubricError(ValueError):
 
 
 class Limits(NamedTuple):
-    """Seconds each step may take before it fails: config/rubric.yaml says
-    how many, and what each is for."""
+    """Every limit of a run: config/rubric.yaml says how much, and why
+    (seconds; memory in GiB; counts)."""
     build: float
     launch: float
     stand: float
@@ -29,6 +28,20 @@ class Limits(NamedTuple):
     start: float
     drawing: float
     settle: float
+    up: float
+    cpu: float
+    memory: float
+    processes: int
+    disk: float
+    files: int
+    events: int
+    record: int
+    turtles: int
+    world_memory: float
+    world_processes: int
+    watcher_memory: float
+    watcher_processes: int
+    alone: int
 
 
 ALLOWED = ('teleport', 'spawn', 'set_pen')
@@ -107,6 +120,20 @@ def _read(path):
     return data
 
 
+def _limits(given):
+    """Limits of the rubric file's entries: counts whole, none missing."""
+    missing = sorted(set(Limits._fields) - set(given))
+    if missing:
+        raise RubricError(f'limits: {", ".join(missing)} missing')
+    limits = {}
+    for name, kind in Limits.__annotations__.items():
+        value = _number(given[name], f'limits: {name}')
+        if kind is int and value != int(value):
+            raise RubricError(f'limits: {name}: {given[name]!r} is not a whole number')
+        limits[name] = kind(value)
+    return Limits(**limits)
+
+
 def load(default_path, override_path=None) -> Rubric:
     """The package's rubric, with the instructor's entries over it."""
     data = _read(default_path)
@@ -125,7 +152,7 @@ def load(default_path, override_path=None) -> Rubric:
                 value = {**data[key], **value}
             data[key] = value
     points = {k: _number(v, f'points: {k}') for k, v in data['points'].items()}
-    limits = Limits(**{k: _number(data['limits'][k], f'limits: {k}') for k in LIMITS})
+    limits = _limits(data['limits'])
     full, none = (_number(data['accuracy'][k], f'accuracy: {k}') for k in ('full', 'none'))
     if none <= full:
         raise RubricError(f'accuracy: none ({none:g}) must be above full ({full:g})')

@@ -15,7 +15,7 @@ import time
 from typing import NamedTuple
 from xml.sax.saxutils import quoteattr
 
-from ..isolation.sandbox import Sandbox
+from ..isolation.sandbox import GiB, Caps, Sandbox
 from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, Reader
@@ -52,6 +52,12 @@ class Run:
         self.executables = []   # ... each by name
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
+
+
+def caps(limits: Limits) -> Caps:
+    """The sandbox's caps, of the rubric's limits."""
+    return Caps(memory=int(limits.memory * GiB), processes=limits.processes, cpu=limits.cpu,
+                disk=int(limits.disk * GiB), files=limits.files)
 
 
 def _env(work, master_uri, isolated=True):
@@ -241,7 +247,7 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
     command = ['bash', '-c', f'{setup} && '
                'export CMAKE_PREFIX_PATH="$1:$CMAKE_PREFIX_PATH" && shift && '
                'exec roslaunch "$@"', work, os.path.join(work, 'stand_in')] + launch
-    lab = Lab(box, box.inside(command, _env(work, box.master_uri, box.isolated)))
+    lab = Lab(box, box.inside(command, _env(work, box.master_uri, box.isolated)), limits)
     try:
         _watch(lab, limits, result)
     finally:

@@ -29,29 +29,21 @@ from .reports import plain
 from ..isolation.sandbox import GiB, closed_folder
 
 SIMULATOR = '/grading_turtlesim'    # a name no lab needs, so no lab's node displaces it
-MAX_RECORD = 300000             # lines of the record kept (a lab's N: about 3,000)
-MAX_TURTLES = 64                # turtles the grader's simulator holds at once (~max_turtles)
-# What the world may hold, whatever a submission gives it to hold (parameters
-# of any size on its master, turtles, messages): a cgroup of its own (a
-# world idles at about 90 MiB with a dozen threads).
-LIMITS = {
-    'memory': (GiB, lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's "
-                              f"master and simulator (what the submission gave them to hold)"),
-    'processes': (256, lambda n: f"process limit of {n} reached by the grader's master and "
-                                 f"simulator"),
-    'cpu': (math.inf, lambda n: ''),
+# What the grader's own processes for a run may hold (the rubric's limits say
+# how much), whatever the submission gives them to hold, each in a cgroup.
+WORLD_SAYS = {
+    'memory': lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's master and "
+                        f"simulator (what the submission gave them to hold)",
+    'processes': lambda n: f"process limit of {n} reached by the grader's master and simulator",
 }
+WATCHER_SAYS = {
+    'memory': lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's watcher (a "
+                        f"message on /chatter that large)",
+    'processes': lambda n: f"process limit of {n} reached by the grader's watcher",
+}
+WORLD_VARIABLES = ('PATH', 'ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
+                   'ROS_DISTRO', 'ROS_VERSION', 'ROS_ROOT', 'ROS_ETC_DIR', 'ROS_PYTHON_VERSION')
 STOP_SECONDS = 20.0         # for roslaunch to end its nodes on Ctrl-C, outside a sandbox
-MAX_EVENTS = 100000         # events kept of a run (a lab's run has about 20,000)
-# What the watcher, run as root, may hold: rospy reads a message of any
-# length (up to 4 GiB) before it looks at it (it idles at about 40 MiB).
-WATCHER_LIMITS = {
-    'memory': (GiB // 2, lambda n: f"memory limit of {n / GiB:g} GiB reached by the grader's "
-                                   f"watcher (a message on /chatter that large)"),
-    'processes': (64, lambda n: f"process limit of {n} reached by the grader's watcher"),
-    'cpu': (math.inf, lambda n: ''),
-}
-UP_SECONDS = 30.0               # for the master and the simulator to come up
 _REPOSITORY = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.realpath(__file__)))))
 SIM_FOLDER = os.path.join(_REPOSITORY, 'sim', 'turtlesim')
@@ -92,6 +84,23 @@ def course_environment(environ, shown=True):
                 return {}
             return {'CPATH': ':'.join(filter(None, [include, environ.get('CPATH', '')]))}
     return {}
+
+
+def _cgroup_limits(memory_gib, processes, says):
+    """A cgroup's limits (sandbox.Cgroup) for the grader's own processes: no CPU limit."""
+    return {'memory': (int(memory_gib * GiB), says['memory']),
+            'processes': (processes, says['processes']), 'cpu': (math.inf, lambda n: '')}
+
+
+def _tail(path, size=2000):
+    """The last `size` bytes of the file at `path`, as text ('' if unreadable)."""
+    try:
+        with open(path, 'rb') as f:
+            f.seek(0, os.SEEK_END)
+            f.seek(max(0, f.tell() - size))
+            return f.read().decode('utf-8', 'replace')
+    except OSError:
+        return ''
 
 
 def _read_to_end(fd, lines):
@@ -149,17 +158,16 @@ class GradingWorld:
     """rosmaster and the simulator for one sandbox (`box`); `events` is the
     simulator's record as it comes, one dict a line ('k', 't', ...)."""
 
-    def __init__(self, box):
+    def __init__(self, box, limits):
         self.box, self.user, self.home = box, box.beside_user, None   # never a submission's
-        self.record = JsonLines(MAX_RECORD, lambda e: isinstance(e, dict) and 'k' in e and 't' in e)
+        self.limits = limits
+        self.record = JsonLines(limits.record,
+                                lambda e: isinstance(e, dict) and 'k' in e and 't' in e)
         self.events = self.record.items     # the record as it comes
         self.master = self.simulator = self.reader = self.cgroup = None
 
     def _env(self):
-        env = {name: value for name, value in os.environ.items()
-               if name in ('PATH', 'ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH',
-                           'LD_LIBRARY_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_ROOT',
-                           'ROS_ETC_DIR', 'ROS_PYTHON_VERSION')}
+        env = {name: value for name, value in os.environ.items() if name in WORLD_VARIABLES}
         env['PYTHONPATH'] = os.path.join(SIM_FOLDER, 'src') + ':' + env.get('PYTHONPATH', '')
         env.update(HOME=self.home, ROS_HOME=self.home, TMPDIR=self.home, LANG='C.UTF-8',
                    ROS_MASTER_URI=self.box.master_uri, ROS_IP='127.0.0.1',
@@ -173,7 +181,8 @@ class GradingWorld:
                              f"package's checkout (make build), not from an install space")
         self.home = self.box.folder_beside()
         if self.box.isolated:
-            self.cgroup = self.box.limited('w', LIMITS)     # removed with the box too
+            self.cgroup = self.box.limited('w', _cgroup_limits(   # removed with the box too
+                self.limits.world_memory, self.limits.world_processes, WORLD_SAYS))
         log = open(os.path.join(self.home, 'world.log'), 'wb')
         port = self.box.master_uri.rsplit(':', 1)[1]
         # rosmaster itself, not roscore: roscore's roslaunch would leave its
@@ -187,17 +196,17 @@ class GradingWorld:
             ['bash', '-c', 'for _ in $(seq 300); do (exec 3<>"/dev/tcp/127.0.0.1/$0") '
                            '2>/dev/null && break; sleep 0.1; done; exec "$@"', port,
              '/usr/bin/python3', os.path.join(SIM_FOLDER, 'scripts', 'turtlesim_node'),
-             f'__name:={SIMULATOR[1:]}', f'_max_turtles:={MAX_TURTLES}'], log, env, (write_end,))
+             f'__name:={SIMULATOR[1:]}', f'_max_turtles:={self.limits.turtles}'], log, env, (write_end,))
         os.close(write_end)
         log.close()
         self.reader = threading.Thread(target=_read_to_end, args=(read_end, self.record),
                                        daemon=True)
         self.reader.start()
-        deadline = time.monotonic() + UP_SECONDS
+        deadline = time.monotonic() + self.limits.up
         while not any(e['k'] == 'spawn' for e in self.events[:5]):
             if self.broken() or time.monotonic() > deadline or self.box.stopped:
                 raise WorldError(f"the grader's master and simulator did not come up: "
-                                 f"{self.broken() or 'no turtle within %g s' % UP_SECONDS}"
+                                 f"{self.broken() or 'no turtle within %g s' % self.limits.up}"
                                  f"; see {self.log_tail()!r}")
             time.sleep(0.05)
 
@@ -227,22 +236,15 @@ class GradingWorld:
     def overflowed(self):
         """The limit of the world's that the submission reached, in words, or ''."""
         if self.record.full:
-            return f"more than {MAX_RECORD} changes in the grader's simulator: it stopped recording"
+            return (f"more than {self.limits.record} changes in the grader's simulator: it "
+                    f"stopped recording")
         if any(e['k'] == 'refused' and 'max_turtles' in e.get('why', '') for e in self.events):
-            return (f"more than {MAX_TURTLES} turtles at once: the grader's simulator refused "
+            return (f"more than {self.limits.turtles} turtles at once: the grader's simulator refused "
                     f"the spawns past them")
         return self.cgroup.reached() if self.cgroup is not None else ''
 
-    def log_tail(self, size=2000):
-        if self.home is None:
-            return ''
-        try:
-            with open(os.path.join(self.home, 'world.log'), 'rb') as f:
-                f.seek(0, os.SEEK_END)
-                f.seek(max(0, f.tell() - size))
-                return f.read().decode('utf-8', 'replace')
-        except OSError:
-            return ''
+    def log_tail(self):
+        return _tail(os.path.join(self.home, 'world.log')) if self.home else ''
 
     def stop(self):
         """Ends both (and anything else of their user in the sandbox's
@@ -312,8 +314,10 @@ class Watcher:
     come. Its ROS home and its errors are in a folder of the grader's own,
     which the submission cannot reach."""
 
-    def __init__(self, box):
-        self.cgroup = box.limited('a', WATCHER_LIMITS) if box.isolated else None
+    def __init__(self, box, limits):
+        self.cgroup = box.limited('a', _cgroup_limits(
+            limits.watcher_memory, limits.watcher_processes, WATCHER_SAYS)) if box.isolated else None
+        self.most = limits.events
         self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
         env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
                    ROS_HOME=self.home, PYTHONUNBUFFERED='1')
@@ -333,7 +337,7 @@ class Watcher:
             if self.cgroup is not None:
                 self.cgroup.remove()
             raise
-        self.lines = JsonLines(MAX_EVENTS, lambda e: isinstance(e, dict) and 'kind' in e)
+        self.lines = JsonLines(self.most, lambda e: isinstance(e, dict) and 'kind' in e)
         self.events = self.lines.items      # as they come
         threading.Thread(target=self.lines.read, args=(self.process.stdout,), daemon=True).start()
 
@@ -345,7 +349,7 @@ class Watcher:
         """Why the grader stopped watching, or '': a run's events are capped,
         and what the watcher may hold (rospy takes a message of any length)."""
         if self.lines.full:
-            return (f'more than {MAX_EVENTS} messages for the grader to watch (poses, '
+            return (f'more than {self.most} messages for the grader to watch (poses, '
                     f'/chatter): it stopped watching')
         return self.cgroup.reached() if self.cgroup is not None else ''
 
@@ -378,13 +382,13 @@ class Lab:
     the watcher, started in that order; `stop` ends whatever of them was
     started, however far the start came."""
 
-    def __init__(self, box, argv):
-        self.box, self.world = box, GradingWorld(box)
+    def __init__(self, box, argv, limits):
+        self.box, self.world = box, GradingWorld(box, limits)
         self.terminal = self.watcher = None
         try:
             self.world.start()
             self.terminal = Terminal(argv, box)
-            self.watcher = Watcher(box)
+            self.watcher = Watcher(box, limits)
         except BaseException:
             self.stop()
             raise

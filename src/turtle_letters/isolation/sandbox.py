@@ -2,7 +2,7 @@
 namespace of its own with loopback only (so the master the grader runs
 for it is its own, on the usual port), and in it Debian's bubblewrap with the rules in RULES, run as
 an unprivileged user of its own (as_user), in a cgroup of its own with
-LIMITS and the cores it was given. Beside it, in its namespace but not
+its Caps and the cores it was given. Beside it, in its namespace but not
 its sandbox, the grader may run processes of its own (`beside`): as
 itself, or as a user of the grader's that is never the submission's
 (`beside_user`), each in a folder of its own (`folder_beside`); `stop`
@@ -25,6 +25,7 @@ import stat
 import subprocess
 import tempfile
 import time
+from typing import NamedTuple
 
 from .files import remove_tree
 
@@ -74,19 +75,29 @@ def as_user(user):
             '--inh-caps=-all', '--bounding-set=-all', '--no-new-privs', '--']
 
 
-# What all of a submission's processes may use together, counted by a
-# cgroup of its own: memory (files in its /tmp included) and tasks are
-# capped by the kernel; CPU time is watched, and the run stopped at it.
-LIMITS = {
-    'memory': (2 * GiB, lambda n: f'memory limit of {n / GiB:g} GiB reached'),
-    'processes': (256, lambda n: f'process limit of {n} reached (threads count)'),
-    'cpu': (300, lambda n: f'CPU time limit of {n} s reached'),
+class Caps(NamedTuple):
+    """What all of a submission's processes may use together (the grader's
+    rubric file declares how much, and why): memory (bytes, the files in
+    its /tmp included) and tasks, held by the kernel in a cgroup of its
+    own; CPU seconds, watched, the run stopped at them; its writable space,
+    a tmpfs of its own (bytes; its pages count in its memory too), and the
+    files it may make there."""
+    memory: int
+    processes: int
+    cpu: float
+    disk: int
+    files: int
+
+
+# What each limit reached says.
+SAYS = {
+    'memory': lambda n: f'memory limit of {n / GiB:g} GiB reached',
+    'processes': lambda n: f'process limit of {n} reached (threads count)',
+    'cpu': lambda n: f'CPU time limit of {n:g} s reached',
+    'disk': lambda n: f'disk limit of {n / GiB:g} GiB reached (its files, /tmp and /dev/shm '
+                      f'together)',
 }
-# The writable space of each submission: a tmpfs of its own (its pages
-# count in its memory too), so one that fills it fails alone.
-DISK = (1 * GiB, lambda n: f'disk limit of {n / GiB:g} GiB reached (its files, /tmp and '
-                           f'/dev/shm together)')
-INODES = 200000         # files it may make there
+PROBE = Caps(memory=GiB // 4, processes=64, cpu=10, disk=GiB // 64, files=1000)  # `problem`'s try
 FULL = 1 << 20          # bytes free under which its space counts as full
 _NUMBERS = itertools.count(1)
 COVERED = ('/tmp', '/root', '/home', '/run')     # the folders RULES covers with empty ones
@@ -163,7 +174,7 @@ def problem():
         if shutil.which(tool) is None:
             return f'{tool} is not installed (make deps installs {package})'
     try:
-        with Sandbox(cpu=min(os.sched_getaffinity(0))) as box:
+        with Sandbox(PROBE, cpu=min(os.sched_getaffinity(0))) as box:
             tried = subprocess.run(box.inside(['true'], {}), stdout=subprocess.PIPE,
                                    stderr=subprocess.STDOUT, universal_newlines=True)
         if tried.returncode != 0:
@@ -394,14 +405,14 @@ def _free_port():
 
 
 class Sandbox:
-    """A network namespace with loopback up, a cgroup with LIMITS, a work
+    """A network namespace with loopback up, a cgroup with its `caps`, a work
     folder, and commands to run in them: `inside` for the submission's, in
     bubblewrap as its own user; `beside` for the grader's. Its work folder,
-    /tmp and /dev/shm are on a tmpfs of DISK bytes of its own, gone with it.
+    /tmp and /dev/shm are on a tmpfs of `caps.disk` bytes of its own, gone with it.
     slot: which of those graded at once (its user is USER + slot); cpu: its core."""
 
-    def __init__(self, hidden=(), isolated=True, cpu=None, limits=None, slot=0):
-        self.isolated, self.limits = isolated, limits or LIMITS
+    def __init__(self, caps: Caps, hidden=(), isolated=True, cpu=None, slot=0):
+        self.isolated, self.caps = isolated, caps
         self.cpus = [cpu] if cpu is not None else None
         self.user = USER + slot % USERS
         self.beside_user = self.user + USERS    # the grader's processes beside it run as this
@@ -422,11 +433,11 @@ class Sandbox:
             os.mkdir(self.work, 0o700)
             return self
         try:
-            _writable_space(self.scratch, self.user)
+            _writable_space(self.scratch, self.user, self.caps)
             os.chmod(self.scratch, 0o711)    # the folders beside it are here
             _run(['ip', 'netns', 'add', self.namespace])
             _run(['ip', '-n', self.namespace, 'link', 'set', 'lo', 'up'])
-            self.cgroup = Cgroup(self.namespace, self.limits, self.cpus)
+            self.cgroup = Cgroup(self.namespace, _cgroup_limits(self.caps), self.cpus)
         except (OSError, subprocess.CalledProcessError):
             self.__exit__()
             raise
@@ -493,7 +504,7 @@ class Sandbox:
         """The words of the first limit the submission reached, or ''."""
         if self.cgroup is None:
             return ''
-        return DISK[1](DISK[0]) if _full(self.scratch) else self.cgroup.reached()
+        return SAYS['disk'](self.caps.disk) if _full(self.scratch) else self.cgroup.reached()
 
     def beside(self, argv, user=None, readable=(), writable=()):
         """`argv` in its network namespace, not its sandbox: as the grader,
@@ -515,6 +526,11 @@ class Sandbox:
             rules + ['--'] + as_user(self.user) + list(argv)
 
 
+def _cgroup_limits(caps):
+    """What its cgroup holds (Cgroup's limits): memory, tasks and CPU, each with its words."""
+    return {name: (getattr(caps, name), SAYS[name]) for name in ('memory', 'processes', 'cpu')}
+
+
 def _full(folder):
     """Whether the space `folder` is on is full: under FULL bytes or no file left."""
     space = os.statvfs(folder)
@@ -526,10 +542,10 @@ def _pinned(cpus):
     return ['taskset', '-c', str(cpus[0])] if cpus else []
 
 
-def _writable_space(scratch, user):
-    """At `scratch`, a tmpfs of DISK bytes and INODES files holding the
-    submission's work folder, /tmp and /dev/shm, all `user`'s."""
-    _run(['mount', '-t', 'tmpfs', '-o', f'size={DISK[0]},nr_inodes={INODES},mode=0700',
+def _writable_space(scratch, user, caps):
+    """At `scratch`, a tmpfs of caps.disk bytes and caps.files files holding
+    the submission's work folder, /tmp and /dev/shm, all `user`'s."""
+    _run(['mount', '-t', 'tmpfs', '-o', f'size={caps.disk},nr_inodes={caps.files},mode=0700',
           'turtle_letters_sandbox', scratch])
     for name, mode in (('work', 0o700), ('tmp', 0o1777), ('shm', 0o1777)):
         os.mkdir(os.path.join(scratch, name))

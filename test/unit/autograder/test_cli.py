@@ -20,7 +20,7 @@ def test_the_graders_own_failure_on_a_submission_is_its_row_only(tmp_path, monke
     def fails(folder):
         raise RecursionError('maximum recursion depth exceeded')
     monkeypatch.setattr(driver.submission, 'find', fails)
-    place = cli.Place([], isolated=False, jobs=1)
+    place = cli.Place([], isolated=False, jobs=1, caps=None)
     student = Student('a\x1b[2J1', 'Ann', 'A', str(tmp_path))
     row, _ = driver.grade(student, rubrics.load(RUBRIC), str(tmp_path / 'out'), place)
     assert (row.grade.verdict, row.grade.score) == ('fail', 0)
@@ -32,7 +32,7 @@ def test_the_graders_own_failure_on_a_submission_is_its_row_only(tmp_path, monke
 
 
 def test_once_stopped_no_student_is_begun(tmp_path):
-    place = cli.Place([], isolated=False, jobs=1)
+    place = cli.Place([], isolated=False, jobs=1, caps=None)
     place.stopping.set()
     with pytest.raises(driver.Stopped):
         driver.grade(Student('a1', 'Ann', 'A', None), rubrics.load(RUBRIC),

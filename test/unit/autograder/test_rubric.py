@@ -1,11 +1,12 @@
 """The rubric: the package's defaults, an instructor's file over them, and
 what each kind of run earns under it, criterion by criterion."""
 import os
+import re
 
 import pytest
 
 from turtle_letters.autograder.observations import Drawing
-from turtle_letters.autograder.rubric import CRITERIA, Facts, RubricError, grade, load
+from turtle_letters.autograder.rubric import CRITERIA, Facts, Limits, RubricError, grade, load
 from turtle_letters.autograder.session import Step
 from turtle_letters.reading.ocr import read_text
 from turtle_letters.reading.recognition import read_row
@@ -51,9 +52,38 @@ def test_an_instructors_file_changes_only_what_it_gives(tmp_path):
     assert rubric.limits.drawing == 20 and rubric.limits.build == 300
 
 
+def limits_in(text, start):
+    """{name: (value, reason)} of the limits block of the rubric file, or
+    of the table under `start` in doc/grading.md."""
+    found, lines = {}, text[text.index(start):].lstrip('\n').splitlines()[1:]
+    for line in lines:
+        if re.match(r'^[a-z]', line) or (found and not line.strip()):
+            break
+        yaml_entry = re.match(r'^  ([a-z_]+): ([0-9.]+)\s+# (.*)$', line)
+        table_row = re.match(r'^\| `([a-z_]+)` \| ([0-9.]+) \| (.*) \|$', line)
+        entry = yaml_entry or table_row
+        if entry:
+            found[entry.group(1)] = (float(entry.group(2)), entry.group(3))
+    return found
+
+
+def test_every_limit_is_declared_once_with_its_reason_and_shown_as_declared():
+    """config/rubric.yaml's `limits:` is the one table of a run's limits:
+    each there with a reason, each used (a field of Limits), and
+    doc/grading.md shows that table as it is."""
+    with open(DEFAULT) as f:
+        declared = limits_in(f.read(), '\nlimits:')
+    with open(os.path.join(os.path.dirname(DEFAULT), '..', 'doc', 'grading.md')) as f:
+        shown = limits_in(f.read(), '| limit | default | what for |\n|---|')
+    assert list(declared) == list(Limits._fields)
+    assert shown == declared
+    assert load(DEFAULT).limits == Limits(*(value for value, _ in declared.values()))
+
+
 @pytest.mark.parametrize('text, says', [
     ('points: {colour: 5}\n', 'unknown colour'),
     ('limits: {drawing: -1}\n', 'limits: drawing: -1'),
+    ('limits: {turtles: 6.5}\n', 'limits: turtles: 6.5 is not a whole number'),
     ('accuracy: {full: 0.2}\n', 'must be above full'),
     ('pass_score: [1]\n', 'pass_score'),
     ('- a list\n', 'expected a mapping'),

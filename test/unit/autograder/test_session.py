@@ -62,16 +62,16 @@ def test_the_lab_stops_what_it_started_in_order_however_far_its_start_came(monke
     said = []
     parts = {name: Part(name, said, fails=name == failing)
              for name in ('world', 'terminal', 'watcher')}
-    monkeypatch.setattr(world, 'GradingWorld', lambda box: parts['world'])
+    monkeypatch.setattr(world, 'GradingWorld', lambda box, limits: parts['world'])
     monkeypatch.setattr(world, 'Terminal', parts['terminal'])
     monkeypatch.setattr(world, 'Watcher', parts['watcher'])
     started = ['world', 'terminal', 'watcher']
     started = started[:started.index(failing) + 1] if failing else started
     if failing:
         with pytest.raises(OSError):
-            Lab(None, ['roslaunch'])
+            Lab(None, ['roslaunch'], None)
     else:
-        assert Lab(None, ['roslaunch']).stop() == 'watcher said this'
+        assert Lab(None, ['roslaunch'], None).stop() == 'watcher said this'
     stopped = [name for name in ('terminal', 'world', 'watcher') if name in started]
     stopped = [n for n in stopped if n != failing or n == 'world']    # the world is always stopped
     assert said == [f'{n} started' for n in started] + [f'{n} stopped' for n in stopped]
