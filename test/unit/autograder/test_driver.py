@@ -1,0 +1,84 @@
+"""The driver's stages in order, with fakes of the place, the sandbox and
+the session's runs: a student to their row without root or ROS. What each
+run observes is stood in for by its facts; the rubric, the row and the
+files are real."""
+import contextlib
+import json
+import os
+import threading
+from types import SimpleNamespace
+
+from turtle_letters.autograder import driver, rubric as rubrics
+from turtle_letters.autograder.observations import Drawing
+from turtle_letters.autograder.roster import Student
+from turtle_letters.autograder.session import Step
+from turtle_letters.autograder.submission import Package
+
+HERE = os.path.dirname(__file__)
+RUBRIC = rubrics.load(os.path.join(HERE, '..', '..', '..', 'config', 'rubric.yaml'))
+OK = Step(True, 'fine')
+L_PATH = [(1.0, 3.0), (1.0, 1.0), (2.2, 1.0)]
+
+
+class Place:
+    """A fake place: one sandbox of fakes, never stopped."""
+
+    def __init__(self):
+        self.stopping, self.box = threading.Event(), SimpleNamespace(stopped=False)
+
+    @contextlib.contextmanager
+    def grading(self, _):
+        yield
+
+    @contextlib.contextmanager
+    def sandbox(self):
+        yield self.box
+
+
+def run_of(name, executables=()):
+    """A fake session.Run: its steps, what it started, its log."""
+    return SimpleNamespace(name=name, build=OK, launch=Step(False, f'{name} launched'),
+                           waited=OK, talker=OK, stuck='', limit='', broken='', events=[],
+                           executables=list(executables), cpu_pct=None,
+                           log=[(f'roslaunch ({name})', f'{name} ran')])
+
+
+def test_executables_that_drew_nothing_together_run_each_alone_until_one_draws(
+        tmp_path, monkeypatch):
+    """Together, three executables drew nothing; alone, a.py draws nothing
+    and b.py draws the L: b.py's run is the row, and c.py is never tried."""
+    tried = []
+    monkeypatch.setattr(driver.submission, 'find', lambda folder: Package(
+        name="lab", folder=folder, launch=None, problem='', notes=[]))
+    monkeypatch.setattr(driver.session, 'run', lambda package, limits, box: run_of(
+        'together', ['a.py', 'b.py', 'c.py']))
+    monkeypatch.setattr(driver.session, 'alone', lambda first, name, limits, box: (
+        tried.append(name), run_of(name))[1])
+    drawn = {'b.py': Drawing([L_PATH], 1.0, 5.0, 200, [])}
+
+    def observed(expected, run, rubric):      # what the run's record showed, stood in for
+        drawing = drawn.get(run.name)
+        return rubrics.Facts.observed(expected, run, drawing, *driver.read(drawing, expected))
+    monkeypatch.setattr(driver, 'observed', observed)
+    row, facts = driver.grade(Student('s1', 'Lena', 'L', str(tmp_path)), RUBRIC,
+                              str(tmp_path / 'out'), Place())
+    assert tried == ['a.py', 'b.py']
+    assert facts.launch.says == 'b.py launched' and row.drawn == 'L'
+    with open(tmp_path / 'out' / 's1' / 'log.txt') as f:
+        assert 'b.py ran' in f.read()
+    with open(tmp_path / 'out' / 's1' / 'results.json') as f:
+        assert json.load(f)['score'] == row.grade.score
+
+
+def test_a_package_that_cannot_be_found_is_a_row_that_says_why_and_runs_nothing(
+        tmp_path, monkeypatch):
+    monkeypatch.setattr(driver.submission, 'find', lambda folder: Package(
+        name="", folder=folder, launch=None, problem='no package.xml in the folder', notes=[]))
+
+    def no_run(*_):
+        raise AssertionError('nothing is run for a package not found')
+    monkeypatch.setattr(driver.session, 'run', no_run)
+    row, facts = driver.grade(Student('s2', 'Ann', 'A', str(tmp_path)), RUBRIC,
+                              str(tmp_path / 'out'), Place())
+    assert facts.problem == 'no package.xml in the folder'
+    assert row.grade.score == 0 and 'no package.xml in the folder' in row.grade.reason
