@@ -16,6 +16,14 @@ HERE = os.path.dirname(__file__)
 RUBRIC = os.path.join(HERE, '..', '..', '..', 'config', 'rubric.yaml')
 
 
+def ann_and_bob(tmp_path):
+    """(rows, stopped) of a class of two who handed in nothing, graded into tmp_path/out."""
+    args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
+                          '--no-sandbox'])
+    students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
+    return cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [], args)
+
+
 def test_the_graders_own_failure_on_a_submission_is_its_row_only(tmp_path, monkeypatch):
     def fails(folder):
         raise RecursionError('maximum recursion depth exceeded')
@@ -46,11 +54,7 @@ def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_g
         raise OSError(28, 'No space left on device')
     before = signal.getsignal(signal.SIGINT)
     monkeypatch.setattr(driver.reports, 'write_results', full)
-    args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
-                          '--no-sandbox'])
-    students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
-    rows, stopped = cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [],
-                                  args)
+    rows, stopped = ann_and_bob(tmp_path)
     assert stopped == '' and [r.id for r in rows] == ['a1', 'b2']
     assert rows[0].grade.reason == ('It builds: not tried: the grader failed on this '
                                     'submission: OSError: [Errno 28] No space left on device')
@@ -71,11 +75,7 @@ def test_a_ctrl_c_while_a_picture_is_painted_keeps_its_row_once(tmp_path, monkey
         painted.append('done')
         return 'drawing.png'
     monkeypatch.setattr(driver.reports, 'picture', paint_and_press_ctrl_c)
-    args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
-                          '--no-sandbox'])
-    students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
-    rows, stopped = cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [],
-                                  args)
+    rows, stopped = ann_and_bob(tmp_path)
     assert stopped == 'SIGINT' and painted == ['a1', 'done'] and [r.id for r in rows] == ['a1']
     assert rows[0].picture == 'drawing.png'
     assert capsys.readouterr().out.count('a1 Ann:') == 1
@@ -89,9 +89,6 @@ def test_each_row_is_written_as_it_is_graded(tmp_path, monkeypatch):
     monkeypatch.setattr(cli.reports, 'write_csv',
                         lambda path, rows: (written.append([r.id for r in rows]),
                                             real(path, rows)))
-    args = cli.arguments([str(tmp_path), '--roster', 'r.csv', '--out', str(tmp_path / 'out'),
-                          '--no-sandbox'])
-    students = [Student('a1', 'Ann', 'A', None), Student('b2', 'Bob', 'B', None)]
-    cli.grade_all(students, rubrics.load(RUBRIC), str(tmp_path / 'out'), [], args)
+    ann_and_bob(tmp_path)
     assert written == [['a1'], ['a1', 'b2']]
     assert (tmp_path / 'out' / 'grades.csv').read_text().count('\n') == 3
