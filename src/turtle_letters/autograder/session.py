@@ -96,8 +96,7 @@ def build(box, limits):
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True))
     reader = Reader(os.dup(process.stdout.fileno()))
     process.stdout.close()
-    ended = wait_until(lambda: process.poll() is not None, limits.build,
-                       lambda: not (box.stopped or box.reached()))
+    ended = wait_until(lambda: process.poll() is not None, limits.build, box.going)
     if not ended:
         try:
             os.killpg(process.pid, signal.SIGKILL)
@@ -154,12 +153,12 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     result.build, output = build(box, limits)
     result.log.append(('catkin_make', output))
     result.limit = box.reached()
-    if result.limit or box.stopped:
+    if not box.going():
         return result
     if not result.build.ok:
         return _unbuilt(box, limits, result)
     _launch_and_watch(box, limits, result)
-    if _refused(result) and not (result.limit or box.stopped):
+    if _refused(result) and box.going():
         first, refused = result, result.launch.says
         result = Run(package._replace(launch=None))     # a fresh world, the same build
         result.build, result.log = first.build, first.log

@@ -397,9 +397,8 @@ class Lab:
         """Whether the run is still worth watching, the one place a run asks:
         roslaunch runs, the sandbox is within its limits and not stopped,
         the watcher's events and the simulator's record within theirs and whole."""
-        return self.terminal.process.poll() is None and not self.box.reached() and \
-            not self.box.stopped and not self.watcher.full and not self.world.full and \
-            not self.world.broken()
+        return self.terminal.process.poll() is None and self.box.going() and \
+            not self.watcher.full and not self.world.full and not self.world.broken()
 
     def limit(self):
         """The limits reached, of the sandbox, the watcher and the world, in words, or ''."""

@@ -500,6 +500,10 @@ class Sandbox:
         self.others.append(Cgroup(self.namespace + suffix, limits))
         return self.others[-1]
 
+    def going(self):
+        """Whether what runs in it may go on: not stopped, and no limit reached."""
+        return not self.stopped and not self.reached()
+
     def reached(self):
         """The words of the first limit the submission reached, or ''."""
         if self.cgroup is None:

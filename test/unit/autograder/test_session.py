@@ -16,8 +16,8 @@ from turtle_letters.autograder.world import Lab
 def lab_of(**changed):
     """A Lab of fakes: its sandbox, world, terminal and watcher as `changed` says."""
     lab = Lab.__new__(Lab)
-    lab.box = SimpleNamespace(reached=lambda: changed.get('limit', ''),
-                              stopped=changed.get('stopped', False))
+    lab.box = SimpleNamespace(going=lambda: not changed.get('limit') and
+                              not changed.get('stopped'))
     lab.terminal = SimpleNamespace(process=SimpleNamespace(poll=lambda: changed.get('ended')))
     lab.watcher = SimpleNamespace(full=changed.get('events_full', False))
     lab.world = SimpleNamespace(full=changed.get('record_full', False),
