@@ -1,4 +1,4 @@
-"""The driver's stages in order, with fakes of the place, the sandbox and
+"""The driver's stages (driver.py) in order, with fakes of the place, the sandbox and
 the session's runs: a student to their row without root or ROS. What each
 run observes is stood in for by its facts; the rubric, the row and the
 files are real."""
