@@ -203,9 +203,9 @@ def world_cost():
             started = time.monotonic()
             world.start()
             up = time.monotonic() - started
-            before = _user_usage(box.beside_user)[0]
+            before = _user_usage(box.beside.user)[0]
             time.sleep(WORLD_WATCH)
-            cpu, memory = _user_usage(box.beside_user)
+            cpu, memory = _user_usage(box.beside.user)
         finally:
             world.stop()
     return dict(up_s=up, cpu_pct=100 * (cpu - before) / WORLD_WATCH, mib=memory)

@@ -4,7 +4,7 @@ beside them (Watcher, running watch.py), with one stop for all three.
 
 The world is the grader's own: a ROS master
 (rosmaster) and the bundled simulator, started beside the sandbox in its
-network namespace, as a user the submission is not (the sandbox's beside_user).
+network namespace, as a user the submission is not (the user of the sandbox's Beside).
 The submission's nodes reach them over the network, as ROS lets them; the
 simulator's account of what it drew (sim/.../record.py) comes to the grader
 over a pipe, which nothing in the sandbox can reach. That account is the
@@ -159,8 +159,7 @@ class GradingWorld:
     simulator's record as it comes, one dict a line ('k', 't', ...)."""
 
     def __init__(self, box, limits):
-        self.box, self.user, self.home = box, box.beside_user, None   # never a submission's
-        self.limits = limits
+        self.box, self.limits, self.home = box, limits, None    # home: made at start, beside
         self.record = JsonLines(limits.record,
                                 lambda e: isinstance(e, dict) and 'k' in e and 't' in e)
         self.events = self.record.items     # the record as it comes
@@ -179,9 +178,9 @@ class GradingWorld:
         if not os.path.isdir(SIM_FOLDER):
             raise WorldError(f'the bundled simulator is not at {SIM_FOLDER}: grade from the '
                              f"package's checkout (make build), not from an install space")
-        self.home = self.box.folder_beside()
+        self.home = self.box.beside.folder()
         if self.box.isolated:
-            self.cgroup = self.box.limited('w', _cgroup_limits(   # removed with the box too
+            self.cgroup = self.box.beside.limited('w', _cgroup_limits(   # removed with the box
                 self.limits.world_memory, self.limits.world_processes, WORLD_SAYS))
         log = open(os.path.join(self.home, 'world.log'), 'wb')
         port = self.box.master_uri.rsplit(':', 1)[1]
@@ -213,7 +212,7 @@ class GradingWorld:
     def _started(self, argv, log, env=None, fds=()):
         joining = self.cgroup.joining() if self.cgroup is not None else []
         return self.box.started(subprocess.Popen(
-            joining + self.box.beside(argv, self.user, [SIM_FOLDER], [self.home]),
+            joining + self.box.beside.command(argv, True, [SIM_FOLDER], [self.home]),
             env=env or self._env(),
             cwd=self.home, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
             pass_fds=fds, start_new_session=True))
@@ -251,11 +250,11 @@ class GradingWorld:
         namespace); the record read to its end."""
         # Their user's processes first: each bubblewrap reaps its own and
         # ends, and none is left for init to reap (a slow init shows them).
-        self.box.stop_beside()
+        self.box.beside.stop()
         for process in (self.simulator, self.master):
             if process is None:
                 continue
-            try:       # outside a sandbox it may run as the grader, whom stop_beside spares
+            try:       # outside a sandbox it may run as the grader, whom beside.stop() spares
                 process.wait(timeout=5 if self.box.isolated else 0.2)
             except subprocess.TimeoutExpired:
                 try:
@@ -315,7 +314,7 @@ class Watcher:
     which the submission cannot reach."""
 
     def __init__(self, box, limits):
-        self.cgroup = box.limited('a', _cgroup_limits(
+        self.cgroup = box.beside.limited('a', _cgroup_limits(
             limits.watcher_memory, limits.watcher_processes, WATCHER_SAYS)) if box.isolated else None
         self.most = limits.events
         self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
@@ -328,7 +327,8 @@ class Watcher:
         try:
             joining = self.cgroup.joining() if self.cgroup is not None else []
             self.process = box.started(subprocess.Popen(
-                joining + box.beside(['/usr/bin/python3', '-m', 'turtle_letters.autograder.watch']),
+                joining + box.beside.command(['/usr/bin/python3', '-m',
+                                              'turtle_letters.autograder.watch']),
                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.errors, env=env,
                 cwd=self.home, start_new_session=True))
         except BaseException:

@@ -1,12 +1,12 @@
 """Where a submission's code runs, and nothing of it outside: a network
 namespace of its own with loopback only (so the master the grader runs
-for it is its own, on the usual port), and in it Debian's bubblewrap with the rules in RULES, run as
-an unprivileged user of its own (as_user), in a cgroup of its own with
+for it is its own, on the usual port), and in it Debian's bubblewrap
+with the rules in RULES, run as an unprivileged user of its own (as_user), in a cgroup of its own with
 its Caps and the cores it was given. Beside it, in its namespace but not
-its sandbox, the grader may run processes of its own (`beside`): as
-itself, or as a user of the grader's that is never the submission's
-(`beside_user`), each in a folder of its own (`folder_beside`); `stop`
-ends them with the rest. The sandbox knows nothing of what they are.
+its sandbox, the grader may run processes of its own (Beside): as
+itself, or as a user of the grader's that is never the submission's,
+with folders and cgroups of their own; `stop` ends them with the rest.
+The sandbox knows nothing of what they are.
 
 `problem()` tries the sandbox out and says in one line what keeps it from
 being made here (no root for the namespace, no bubblewrap, no cgroup with
@@ -407,27 +407,27 @@ def _free_port():
 class Sandbox:
     """A network namespace with loopback up, a cgroup with its `caps`, a work
     folder, and commands to run in them: `inside` for the submission's, in
-    bubblewrap as its own user; `beside` for the grader's. Its work folder,
-    /tmp and /dev/shm are on a tmpfs of `caps.disk` bytes of its own, gone with it.
+    bubblewrap as its own user; `beside` (a Beside) for the grader's. Its work
+    folder, /tmp and /dev/shm are on a tmpfs of `caps.disk` bytes of its own.
     slot: which of those graded at once (its user is USER + slot); cpu: its core."""
 
     def __init__(self, caps: Caps, hidden=(), isolated=True, cpu=None, slot=0):
         self.isolated, self.caps = isolated, caps
         self.cpus = [cpu] if cpu is not None else None
         self.user = USER + slot % USERS
-        self.beside_user = self.user + USERS    # the grader's processes beside it run as this
-        self._folders_beside = itertools.count(1)
         self.hidden = [os.path.abspath(h) for h in hidden if os.path.exists(h)]
         self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
         port = MASTER_PORT if isolated else _free_port()
         self.master_uri = f'http://127.0.0.1:{port}'
-        self.cgroup = self.scratch = self.work = None
+        self.cgroup = self.scratch = self.work = self.beside = None
         self.stopped = False    # grading was stopped (Ctrl-C): what runs in it is ended
-        self.sessions, self.others = [], []     # process groups started for it; cgroups beside
+        self.sessions = []      # process groups started for it
 
     def __enter__(self):
         self.scratch = tempfile.mkdtemp(prefix='turtle_letters_sandbox_')
         self.work = os.path.join(self.scratch, 'work')
+        self.beside = Beside(self.scratch, self.namespace, self.user + USERS, self.isolated,
+                             self.cpus)
         if not self.isolated:       # the user reaches its work folder, and no more of it
             os.chmod(self.scratch, 0o711)
             os.mkdir(self.work, 0o700)
@@ -451,23 +451,10 @@ class Sandbox:
         if self.runs_as_its_user():
             _run(['chown', '-R', '-h', f'{self.user}:{self.user}', self.work])
 
-    def folder_beside(self):
-        """A new folder for processes beside it, beside_user's alone, gone with it."""
-        folder = os.path.join(self.scratch, f'beside{next(self._folders_beside)}')
-        os.mkdir(folder, 0o700)
-        os.chown(folder, self.beside_user, self.beside_user)
-        return folder
-
-    def stop_beside(self):
-        """Ends beside_user's processes: those in its namespace, as another
-        grader's sandbox of the same slot has the same user beside it."""
-        kill_user(self.beside_user, lambda: _namespace_pids(self.namespace) if self.isolated
-                  else _all_pids())
-
     def __exit__(self, *_):
-        for cgroup in filter(None, [self.cgroup] + self.others):
-            cgroup.remove()
-        self.stop_beside()
+        if self.cgroup is not None:
+            self.cgroup.remove()
+        self.beside.remove()
         if not self.isolated and self.runs_as_its_user():     # no PID namespace: by its user
             kill_user(self.user)
         if self.isolated:
@@ -486,19 +473,14 @@ class Sandbox:
     def stop(self):
         """Ends everything it runs, for good (the grader was stopped)."""
         self.stopped = True
-        self.stop_beside()      # first: a session's bubblewrap reaps its user's processes
+        self.beside.stop()      # first: a session's bubblewrap reaps its user's processes
         for pid in self.sessions:
             with contextlib.suppress(OSError):
                 os.killpg(pid, signal.SIGKILL)
-        for cgroup in filter(None, [self.cgroup] + self.others):
-            cgroup.kill()
+        if self.cgroup is not None:
+            self.cgroup.kill()
         if not self.isolated and self.runs_as_its_user():
             kill_user(self.user)
-
-    def limited(self, suffix, limits):
-        """A cgroup of `limits` for processes beside it, ended and removed with it."""
-        self.others.append(Cgroup(self.namespace + suffix, limits))
-        return self.others[-1]
 
     def going(self):
         """Whether what runs in it may go on: not stopped, and no limit reached."""
@@ -510,14 +492,6 @@ class Sandbox:
             return ''
         return SAYS['disk'](self.caps.disk) if _full(self.scratch) else self.cgroup.reached()
 
-    def beside(self, argv, user=None, readable=(), writable=()):
-        """`argv` in its network namespace, not its sandbox: as the grader,
-        or as `user` (_as_user_beside)."""
-        run = list(argv) if user is None else \
-            _as_user_beside(user, argv, readable, writable, self.isolated)
-        return _pinned(self.cpus) + (['ip', 'netns', 'exec', self.namespace] if self.isolated
-                                 else []) + run
-
     def inside(self, argv, env):
         """`argv` in the sandbox, with only `env` set."""
         if not self.isolated:
@@ -528,6 +502,50 @@ class Sandbox:
             [option for name, value in sorted(env.items()) for option in ('--setenv', name, value)]
         return self.cgroup.joining() + ['ip', 'netns', 'exec', self.namespace, 'bwrap'] + \
             rules + ['--'] + as_user(self.user) + list(argv)
+
+
+class Beside:
+    """What the grader runs beside a sandbox, in its network namespace but
+    not its sandbox: commands as the grader, or as `user`, a user of the
+    grader's that is never the submission's; folders for them; cgroups of
+    their own. `stop` ends that user's processes; `remove` all of it."""
+
+    def __init__(self, scratch, namespace, user, isolated, cpus):
+        self.scratch, self.namespace, self.user = scratch, namespace, user
+        self.isolated, self.cpus = isolated, cpus
+        self.folders, self.cgroups = itertools.count(1), []
+
+    def command(self, argv, as_user=False, readable=(), writable=()):
+        """`argv` in the namespace: as the grader, or as its user (_as_user_beside)."""
+        run = _as_user_beside(self.user, argv, readable, writable, self.isolated) if as_user \
+            else list(argv)
+        return _pinned(self.cpus) + (['ip', 'netns', 'exec', self.namespace] if self.isolated
+                                     else []) + run
+
+    def folder(self):
+        """A new folder, its user's alone, gone with the sandbox."""
+        folder = os.path.join(self.scratch, f'beside{next(self.folders)}')
+        os.mkdir(folder, 0o700)
+        os.chown(folder, self.user, self.user)
+        return folder
+
+    def limited(self, suffix, limits):
+        """A cgroup of `limits` for processes beside it, removed with it."""
+        self.cgroups.append(Cgroup(self.namespace + suffix, limits))
+        return self.cgroups[-1]
+
+    def stop(self):
+        """Ends its user's processes: those in the namespace, as another
+        grader's sandbox of the same slot has the same user beside it."""
+        kill_user(self.user, lambda: _namespace_pids(self.namespace) if self.isolated
+                  else _all_pids())
+        for cgroup in self.cgroups:
+            cgroup.kill()
+
+    def remove(self):
+        for cgroup in self.cgroups:
+            cgroup.remove()
+        self.stop()
 
 
 def _cgroup_limits(caps):
