@@ -44,7 +44,8 @@ def grade(student: Student, rubric, out, place, warning=''):
                           time.monotonic() - started,
                           reports.leaderboard(facts, run.cpu_pct if run else None), None,
                           '; '.join(filter(None, [warning] + notes)))
-        return reports.write_student(out, row, facts, _log(run, facts, notes, error)), facts
+        row = reports.write_student(out, row, facts, _log(run, facts, notes, error))  # write
+        return row, facts
     except Exception as e:      # the grader failed even there (no space left): the row says so
         facts = failed(student, e)
         return reports.Row(student.id, student.name, student.expected, '',
@@ -53,7 +54,7 @@ def grade(student: Student, rubric, out, place, warning=''):
 
 def _log(run, facts, notes, error):
     """log.txt's sections: (title, text)."""
-    sections = run.log if run else [('submission', facts.problem)]
+    sections = list(run.log) if run else [('submission', facts.problem)]
     sections += [('left out of the submission', '\n'.join(notes))] if notes else []
     return sections + ([("the grader's own error", error)] if error else [])
 
