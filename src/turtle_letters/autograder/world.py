@@ -87,7 +87,7 @@ def course_environment(environ, shown=True):
 
 
 def _cgroup_limits(memory_gib, processes, says):
-    """A cgroup's limits (sandbox.Cgroup) for the grader's own processes: no CPU limit."""
+    """A cgroup's limits (isolation.cgroups.Cgroup) for the grader's own processes: no CPU limit."""
     return {'memory': (int(memory_gib * GiB), says['memory']),
             'processes': (processes, says['processes']), 'cpu': (math.inf, lambda n: '')}
 
