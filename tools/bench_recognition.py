@@ -78,9 +78,10 @@ def readers(ink, expected):
     figures of each alone. (The grader asks OCR only where the strokes do
     not read the expected text: the two combined count its time only there.)"""
     started = time.monotonic()
-    strokes = ''.join(r.letter or '?' for r in read_row(ink, expected)) == expected
+    readings = read_row(ink, expected)
+    strokes = ''.join(r.letter or '?' for r in readings) == expected
     middle = time.monotonic()
-    ocr = supports(read_text(ink, expected), expected)
+    ocr = supports(read_text(ink, expected), expected, readings)
     return strokes, ocr, middle - started, time.monotonic() - middle
 
 

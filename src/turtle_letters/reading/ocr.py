@@ -16,12 +16,15 @@ import threading
 from typing import NamedTuple
 
 from .ink import box, closed, thinned, turned
+from .forms import READABLE
 from .recognition import letters_of, row_tilts
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
 PAD_PX = 16
 CONFIDENT = 80          # Tesseract's confidence (0-100) from which a reading is believed
 CONFIDENT_TURNED = 90   # ... turned back: each turn is one more chance to see what is hoped
+CLEAN = READABLE / 2    # a strokes' fit this close reads its letter beyond doubt
+UPRIGHTS = 60           # degrees apart past which one ink cannot stand upright both ways
 TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by to be read
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
 _apis = threading.local()       # Tesseract's handles are not shared between threads
@@ -151,10 +154,17 @@ def _letter_by_letter(ink, expected):
     return OcrReading(''.join(text for text, _ in read), min(c for _, c in read))
 
 
-def supports(reading: OcrReading, expected: str) -> bool:
-    """Whether the reading is the expected text, confidently."""
-    return bool(expected) and reading.text == expected and \
-        reading.confidence >= (CONFIDENT_TURNED if reading.tilt else CONFIDENT)
+def supports(reading: OcrReading, expected: str, strokes=()) -> bool:
+    """Whether the reading is the expected text, confidently, and none of
+    the strokes' readings (recognition.Reading) is another letter, read
+    cleanly, that stands upright more than UPRIGHTS apart from the tilt OCR
+    read at: one ink does not stand upright both ways (a Z turned a
+    quarter is an N to OCR; the strokes read it a Z, level)."""
+    if not (expected and reading.text == expected and
+            reading.confidence >= (CONFIDENT_TURNED if reading.tilt else CONFIDENT)):
+        return False
+    return not any(r.letter not in (None, e) and r.best.fit <= CLEAN and
+                   abs(r.best.tilt - reading.tilt) > UPRIGHTS for r, e in zip(strokes, expected))
 
 
 def said(reading: OcrReading) -> str:

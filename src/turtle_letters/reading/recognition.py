@@ -23,6 +23,8 @@ from .ink import CELL, WIDEST, box, outline, sampled, samples, thinned, turned
 LEVEL = 0.03        # a fit this good level is not tried tilted
 TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
 NEAR_TILTS = (-10, -5, 5, 10)   # ... when only finding where to cut a row
+FINER = (5.0, 2.5)  # then degrees either way of the best tilts, in turn
+REFINED = 3         # the best-fitting letters whose tilts are tried finer
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 SAMPLE = 0.02       # share of the height between compared points
 HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
@@ -135,10 +137,12 @@ def _fits(ink, letters, beat=None):
     return fits
 
 
-def read(ink, letters=string.ascii_uppercase, tilts=TILTS) -> Reading:
+def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Reading:
     """The letter of `letters` that `ink` (lines of (x, y), m) draws, best
     fit first; ink that fits no letter well level is tried turned back by
-    each of TILTS, and its fits keep the tilt (their strokes turned with it)."""
+    each of TILTS, then by `finer` steps around the tilts that fit best
+    (a wide letter 5 degrees off strays a tenth of its height); its fits
+    keep the tilt (their strokes turned with it)."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
@@ -149,16 +153,30 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS) -> Reading:
     if min((f.fit for f in fits.values()), default=math.inf) > LEVEL:
         x, y, w, h = box(points)
         centre = (x + w / 2, y + h / 2)
-        for tilt in tilts:
-            level = turned(ink, -tilt, centre)
-            if box([p for line in level for p in line])[3] <= 0:
-                continue
-            for letter, fit in _fits(level, letters, fits).items():
-                if fit.fit < fits.get(letter, fit._replace(fit=math.inf)).fit:
-                    fits[letter] = fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=tilt)
+        done = {0.0} | set(tilts)
+        _tried(ink, letters, fits, tilts, centre)
+        for step in finer:
+            if min((f.fit for f in fits.values()), default=math.inf) <= LEVEL:
+                break
+            near = {f.tilt for f in sorted(fits.values(), key=lambda f: f.fit)[:REFINED]
+                    if f.fit <= 2 * f.readable}
+            more = sorted({t + d for t in near for d in (-step, step)} - done)
+            done |= set(more)
+            _tried(ink, letters, fits, more, centre)
     best = min(fits.values(), key=lambda f: f.fit, default=None)
     letter = best.letter if best is not None and best.fit <= best.readable else None
     return Reading(letter, best, fits)
+
+
+def _tried(ink, letters, fits, tilts, centre):
+    """`fits` bettered by the ink turned back by each of `tilts`, about `centre`."""
+    for tilt in tilts:
+        level = turned(ink, -tilt, centre)
+        if box([p for line in level for p in line])[3] <= 0:
+            continue
+        for letter, fit in _fits(level, letters, fits).items():
+            if fit.fit < fits.get(letter, fit._replace(fit=math.inf)).fit:
+                fits[letter] = fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=tilt)
 
 
 def apart(ink):
@@ -206,20 +224,21 @@ def cut(ink, expected):
     """Where to cut the ink into the letters of `expected` side by side, its
     letters touching (a Z's foot run on into an A's leg): each cut, left to
     right, where the part before it fits its expected letter best, between
-    0.4 and 1.6 of an even share of the row. The ink (finely sampled) and
-    the cuts."""
+    0.4 and 1.6 of an even share of the row (tried at fifths of a share,
+    then finer beside the best). The ink (finely sampled) and the cuts."""
     height = box([p for line in ink for p in line])[3]
     fine = [samples([line], SAMPLE * height / 2) for line in ink if line]
     x0, _, width, _ = box([p for line in fine for p in line])
     share, cuts, left = width / len(expected), [], x0 - 1e-9     # a part is (left, right]
     for letter in expected[:-1]:
-        # every tenth of a share, then the twentieths beside the best of those
-        options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
+        # every fifth of a share, then the tenths and twentieths beside the best so far
+        options = [left + share * (0.4 + 0.2 * i) for i in range(7)]
         options = [x for x in options if x < x0 + width] or [left + share]
         fits = [(_fit_before(fine, left, x, letter), x) for x in options]
-        nearest = min(fits)[1]
-        fits += [(_fit_before(fine, left, x, letter), x)
-                 for x in (nearest - share / 20, nearest + share / 20) if left < x < x0 + width]
+        for step in (share / 10, share / 20):
+            nearest = min(fits)[1]
+            fits += [(_fit_before(fine, left, x, letter), x)
+                     for x in (nearest - step, nearest + step) if left < x < x0 + width]
         best = min(fit for fit, _ in fits)
         # of the cuts that fit as well (to a hundredth), the one through the least ink
         cuts.append(min((x for fit, x in fits if fit <= best + 0.01),
@@ -230,7 +249,7 @@ def cut(ink, expected):
 
 def _fit_before(ink, left, right, letter):
     part = columns(ink, [left, right])[1]
-    reading = read(part, letter, NEAR_TILTS) if part else None
+    reading = read(part, letter, NEAR_TILTS, ()) if part else None
     return reading.best.fit if reading is not None and reading.best is not None else math.inf
 
 
@@ -248,16 +267,16 @@ def letters_of(ink, expected):
 
 
 def row_tilts(ink):
-    """Degrees a row of letters may lie off level: 0, and the turn within
-    50 degrees of level, in steps of 5, that leaves the row least high (a
-    row is level where its letters stand side by side)."""
+    """Degrees a row of letters may lie off level, the likelier first: the
+    turn within 50 degrees of level, in steps of 5, that leaves the row
+    least high (a row is level where its letters stand side by side), then 0."""
     points = numpy.array([p for line in ink for p in line])
     if len(points) < 3:
         return [0]
     angles = numpy.radians(numpy.arange(-50, 55, 5))
     heights = [numpy.ptp(points[:, 1] * math.cos(a) - points[:, 0] * math.sin(a)) for a in angles]
     slope = int(round(math.degrees(angles[int(numpy.argmin(heights))])))
-    return [0] + ([slope] if slope else [])
+    return ([slope] if slope else []) + [0]
 
 
 def read_row(ink, expected='') -> List[Reading]:
