@@ -224,21 +224,20 @@ def cut(ink, expected):
     """Where to cut the ink into the letters of `expected` side by side, its
     letters touching (a Z's foot run on into an A's leg): each cut, left to
     right, where the part before it fits its expected letter best, between
-    0.4 and 1.6 of an even share of the row (tried at fifths of a share,
-    then finer beside the best). The ink (finely sampled) and the cuts."""
+    0.4 and 1.6 of an even share of the row. The ink (finely sampled) and
+    the cuts."""
     height = box([p for line in ink for p in line])[3]
     fine = [samples([line], SAMPLE * height / 2) for line in ink if line]
     x0, _, width, _ = box([p for line in fine for p in line])
     share, cuts, left = width / len(expected), [], x0 - 1e-9     # a part is (left, right]
     for letter in expected[:-1]:
-        # every fifth of a share, then the tenths and twentieths beside the best so far
-        options = [left + share * (0.4 + 0.2 * i) for i in range(7)]
+        # every tenth of a share, then the twentieths beside the best of those
+        options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
         options = [x for x in options if x < x0 + width] or [left + share]
         fits = [(_fit_before(fine, left, x, letter), x) for x in options]
-        for step in (share / 10, share / 20):
-            nearest = min(fits)[1]
-            fits += [(_fit_before(fine, left, x, letter), x)
-                     for x in (nearest - step, nearest + step) if left < x < x0 + width]
+        nearest = min(fits)[1]
+        fits += [(_fit_before(fine, left, x, letter), x)
+                 for x in (nearest - share / 20, nearest + share / 20) if left < x < x0 + width]
         best = min(fit for fit, _ in fits)
         # of the cuts that fit as well (to a hundredth), the one through the least ink
         cuts.append(min((x for fit, x in fits if fit <= best + 0.01),
