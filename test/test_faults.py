@@ -205,7 +205,7 @@ class Faults(unittest.TestCase):
         rospy.wait_for_message('/turtle1/pose', Pose, timeout=30)
         sim.send(signal.SIGSTOP)
         self.addCleanup(sim.send, signal.SIGCONT)
-        ctl = controller()
+        ctl = self.start(controller())     # stopped even if this fails: the next test's name
         wait_until(lambda: 'no pose on /turtle1/pose yet' in ctl.output(), 30,
                    'the controller waiting for its first pose', explain=ctl.output)
         ctl.send(signal.SIGINT)
