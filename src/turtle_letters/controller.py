@@ -15,7 +15,7 @@ from .actions.jobs import TYPED_AHEAD, Jobs, chatter_request, text_request
 from .actions.server import DrawServer, describe
 from .classroom.diagnosis import why_stopped
 from .classroom.liveness import refuse_a_second
-from .classroom.placement import Placement, Refused
+from .classroom.placement import Placement, Refused, beside_the_handler
 from .classroom.spares import Spares, draw_in_parallel
 from .letters.font import shown
 from .letters.geometry import PlannedPose
@@ -47,7 +47,7 @@ class TurtleController:
         self.spares = Spares(settings, self.driver.name, Turtle, self.placement.note_spares)
         self.jobs = Jobs()
         self.actions = DrawServer(self.jobs, settings.font)
-        rospy.on_shutdown(self.leave)
+        rospy.on_shutdown(beside_the_handler(self.leave))
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=TYPED_AHEAD)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
         rospy.Subscriber('~svg', String, lambda m: self.request(SvgFile(m.data), '~svg'),
