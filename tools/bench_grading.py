@@ -182,23 +182,19 @@ def _user_usage(user):
     return cpu, memory
 
 
-def _limits():
-    """The package rubric's limits, as the grader uses them."""
-    from turtle_letters.autograder.rubric import load
-    return load(os.path.join(os.path.dirname(__file__), '..', 'config', 'rubric.yaml')).limits
-
-
 def _caps():
+    from turtle_letters.autograder.cli import default_limits
     from turtle_letters.autograder.session import caps
-    return caps(_limits())
+    return caps(default_limits())
 
 
 def world_cost():
     """One student's world: seconds to start it, then its idle CPU and memory."""
     from turtle_letters.isolation.sandbox import Sandbox
+    from turtle_letters.autograder.cli import default_limits
     from turtle_letters.autograder.world import GradingWorld
     with Sandbox(_caps()) as box:
-        world = GradingWorld(box, _limits())
+        world = GradingWorld(box, default_limits())
         try:
             started = time.monotonic()
             world.start()

@@ -17,17 +17,11 @@ SANDBOX_USERS = range(2000000000, 2000000000 + 2 * 256)
 CGROUPS = '/sys/fs/cgroup'
 
 
-def package_limits():
-    """The package rubric's limits (config/rubric.yaml), as the grader uses them."""
-    from turtle_letters.autograder.rubric import load
-    return load(os.path.join(os.path.dirname(__file__), '..', '..', 'config',
-                             'rubric.yaml')).limits
-
-
 def package_caps():
-    """The sandbox's caps of the package rubric's limits."""
+    """The sandbox's caps of the package rubric's limits, as the grader uses them."""
+    from turtle_letters.autograder.cli import default_limits
     from turtle_letters.autograder.session import caps
-    return caps(package_limits())
+    return caps(default_limits())
 
 
 def tree_hash(top):

@@ -74,6 +74,11 @@ def default_rubric():
     return os.path.join(rospkg.RosPack().get_path('turtle_letters'), 'config', 'rubric.yaml')
 
 
+def default_limits():
+    """The package rubric's limits, as the grader uses them without --rubric."""
+    return rubrics.load(default_rubric()).limits
+
+
 class Place:
     """Where submissions run: what they must not see, whether in a sandbox,
     and a slot each for the `jobs` graded at once: a user of its own and a
