@@ -24,7 +24,6 @@ PAD_PX = 16
 CONFIDENT = 80          # Tesseract's confidence (0-100) from which a reading is believed
 CONFIDENT_TURNED = 90   # ... turned back: each turn is one more chance to see what is hoped
 CLEAN = READABLE / 2    # a strokes' fit this close reads its letter beyond doubt
-UPRIGHTS = 60           # degrees apart past which one ink cannot stand upright both ways
 TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by to be read
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
 _apis = threading.local()       # Tesseract's handles are not shared between threads
@@ -157,14 +156,15 @@ def _letter_by_letter(ink, expected):
 def supports(reading: OcrReading, expected: str, strokes=()) -> bool:
     """Whether the reading is the expected text, confidently, and none of
     the strokes' readings (recognition.Reading) is another letter, read
-    cleanly, that stands upright more than UPRIGHTS apart from the tilt OCR
-    read at: one ink does not stand upright both ways (a Z turned a
-    quarter is an N to OCR; the strokes read it a Z, level)."""
+    cleanly: where the two readers each see a letter plainly and differ,
+    neither is credited. (A Z turned a quarter is an N to OCR, the strokes
+    read it a Z; a round O with no tail is a Q to OCR 90% sure, the
+    strokes read it an O within 2% of its height.)"""
     if not (expected and reading.text == expected and
             reading.confidence >= (CONFIDENT_TURNED if reading.tilt else CONFIDENT)):
         return False
-    return not any(r.letter not in (None, e) and r.best.fit <= CLEAN and
-                   abs(r.best.tilt - reading.tilt) > UPRIGHTS for r, e in zip(strokes, expected))
+    return not any(r.letter not in (None, e) and r.best.fit <= CLEAN
+                   for r, e in zip(strokes, expected))
 
 
 def said(reading: OcrReading) -> str:

@@ -25,7 +25,10 @@ TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a lett
 NEAR_TILTS = (-10, -5, 5, 10)   # ... when only finding where to cut a row
 FINER = (5.0, 2.5)  # then degrees either way of the best tilts, in turn
 REFINED = 3         # the best-fitting letters whose tilts are tried finer
+MOST_TILT = max(TILTS) + sum(FINER)     # degrees off level a letter is read at, at most
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
+SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
+SHORT = 0.5         # a letter of a row less high than this share of the row is unfinished, no letter
 SAMPLE = 0.02       # share of the height between compared points
 HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
@@ -285,12 +288,16 @@ def read_row(ink, expected='') -> List[Reading]:
     a letter cut is its expected letter if it reads so alone or with the
     strokes it shares. A row that does not read so level is read turned
     back by its slope (row_tilts). The cuts only find the letters; a
-    reading of all the letters says what each is."""
+    reading of all the letters says what each is. Specks are no part of
+    it (without_specks), and a letter of a row less than SHORT of the
+    row's height reads as no letter (unfinished: a quarter of an S's curve
+    beside a whole U is no I)."""
+    ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
     if count <= 1:
         return [read(ink)]
     if not isinstance(expected, str):
-        return [read(group) for group in apart(ink)]
+        return [_of_row(group, ink) for group in apart(ink)]
     points = [p for line in ink for p in line]
     x, y, w, h = box(points)
     centre, best = (x + w / 2, y + h / 2), None
@@ -307,23 +314,50 @@ def read_row(ink, expected='') -> List[Reading]:
 
 
 def _turned_back(reading, tilt, centre):
-    """A reading of ink turned back by `tilt`, as the ink lies."""
+    """A reading of ink turned back by `tilt`, as the ink lies: no letter
+    where the two tilts add up to more than a letter is read at alone
+    (MOST_TILT: a J lying on its side is no J)."""
     if not tilt:
         return reading
 
     def back(fit):
         return fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=fit.tilt + tilt)
-    return Reading(reading.letter, reading.best and back(reading.best),
-                   {c: back(f) for c, f in reading.fits.items()})
+    best = reading.best and back(reading.best)
+    letter = reading.letter if best is None or abs(best.tilt) <= MOST_TILT else None
+    return Reading(letter, best, {c: back(f) for c, f in reading.fits.items()})
 
 
 def _read_letters(ink, expected):
     """The row's readings, level: set apart, or cut."""
     if len(apart(ink)) >= len(expected):
-        return [read(group) for group in apart(ink)]
+        return [_of_row(group, ink) for group in apart(ink)]
     readings = []
     for letter, (alone, shared) in zip(expected, letters_of(ink, expected)):
-        first = read(alone)
-        second = read(shared) if first.letter != letter else first
+        first = _of_row(alone, ink)
+        second = _of_row(shared, ink) if first.letter != letter else first
         readings.append(second if second.letter == letter else first)
     return readings
+
+
+def _of_row(part, row):
+    """The reading of `part`, a letter of `row`: none where it stands less
+    than SHORT of the row's height (its best fit kept, for the report)."""
+    reading = read(part)
+    if part and box([p for line in part for p in line])[3] < SHORT * box(
+            [p for line in row for p in line])[3]:
+        return Reading(None, reading.best, reading.fits)
+    return reading
+
+
+def without_specks(ink):
+    """`ink` less its specks: ink set apart (apart()) whose extent is under
+    SPECK of all the ink's (a turtle spawned with its pen down, a nudge)."""
+    points = [p for line in ink for p in line]
+    if len(points) < 2:
+        return ink
+    _, _, w, h = box(points)
+
+    def extent(group):
+        _, _, gw, gh = box([p for line in group for p in line])
+        return max(gw, gh)
+    return [line for group in apart(ink) if extent(group) >= SPECK * max(w, h) for line in group]

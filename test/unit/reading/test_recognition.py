@@ -187,3 +187,42 @@ def test_a_row_of_touching_letters_tilted_reads_turned_back_by_its_slope(tilt):
     readings = read_row(ink, 'RH')
     assert [r.letter for r in readings] == ['R', 'H'], [r.best for r in readings]
     assert all(abs(r.best.tilt - tilt) <= 10 for r in readings)
+
+
+def s_begun(left, top, radius=0.4):
+    """The first quarter of an S's top curve and a flat run: how an S that
+    a real class's turtle never finished looked when the grader read it."""
+    arc = [(left + radius - radius * math.cos(a / 20 * math.pi / 2),
+            top - radius + radius * math.sin(a / 20 * math.pi / 2)) for a in range(21)]
+    return arc + [(arc[-1][0] + 0.6, top)]
+
+
+def test_an_unfinished_letter_and_a_speck_in_a_row_are_no_letters():
+    """U, an S begun, and a speck where a turtle spawned with its pen
+    down: a TA reads the U, and no I. (The grader once credited UI of USI
+    here: a sliver of the S's curve read as an I, and the speck as
+    another.)"""
+    u = row('U')
+    right = max(x for stroke in u for x, _ in stroke)
+    ink = u + [s_begun(right + 0.4, 5.0), [(right + 1.6, 5.3), (right + 1.62, 5.31)]]
+    readings = read_row(ink, 'USI')
+    assert readings[0].letter == 'U'
+    assert [r.letter for r in readings[1:]] == [None] * (len(readings) - 1), readings
+
+
+def curve(start, end, centre=(3.0, 9.0), radii=(1.4, 1.0)):
+    """An ellipse's arc, counter-clockwise from `start` to `end` degrees."""
+    return [(centre[0] + radii[0] * math.cos(math.radians(start + (end - start) * i / 40)),
+             centre[1] + radii[1] * math.sin(math.radians(start + (end - start) * i / 40)))
+            for i in range(41)]
+
+
+@pytest.mark.parametrize('start, end, tilt', [(110, 380, -30), (110, 330, -30), (120, 340, 0)])
+def test_a_row_cut_from_one_curve_reads_no_letter_lying_on_its_side(start, end, tilt):
+    """One wide curve where three letters were expected (a real class's
+    S, unfinished): its cuts fit an I or a J lying 80 to 100 degrees off
+    level, in a row itself turned back by up to 50. No letter is read
+    further off level than a letter alone is read at."""
+    ink = turned([curve(start, end)], tilt, (3.0, 9.0))
+    for r in read_row(ink, 'USI'):
+        assert r.letter is None or abs(r.best.tilt) <= 52.5, r.best
