@@ -223,27 +223,35 @@ def columns(ink, cuts, overlap=0.0):
     return letters
 
 
-def cut(ink, expected):
+def cut(ink, expected, ahead=True):
     """Where to cut the ink into the letters of `expected` side by side, its
     letters touching (a Z's foot run on into an A's leg): each cut, left to
-    right, where the part before it fits its expected letter best, between
-    0.4 and 1.6 of an even share of the row. The ink (finely sampled) and
-    the cuts."""
+    right, between 0.4 and 1.6 of an even share of the row, where the part
+    before it fits its expected letter best and, `ahead`, the part after it
+    fits the next letter too (the last cut: the rest as the last letter;
+    an earlier one: the next even share). The ink (finely sampled) and the cuts."""
     height = box([p for line in ink for p in line])[3]
     fine = [samples([line], SAMPLE * height / 2) for line in ink if line]
     x0, _, width, _ = box([p for line in fine for p in line])
     share, cuts, left = width / len(expected), [], x0 - 1e-9     # a part is (left, right]
-    for letter in expected[:-1]:
+    for k, letter in enumerate(expected[:-1]):
+        def fit(x):
+            before = _fit_before(fine, left, x, letter)
+            if not ahead:
+                return before
+            last = k == len(expected) - 2
+            return max(before, _fit_before(fine, x, x0 + width + 1 if last else x + share,
+                                           expected[k + 1]))
         # every tenth of a share, then the twentieths beside the best of those
         options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
         options = [x for x in options if x < x0 + width] or [left + share]
-        fits = [(_fit_before(fine, left, x, letter), x) for x in options]
+        fits = [(fit(x), x) for x in options]
         nearest = min(fits)[1]
-        fits += [(_fit_before(fine, left, x, letter), x)
-                 for x in (nearest - share / 20, nearest + share / 20) if left < x < x0 + width]
-        best = min(fit for fit, _ in fits)
+        fits += [(fit(x), x) for x in (nearest - share / 20, nearest + share / 20)
+                 if left < x < x0 + width]
+        best = min(f for f, _ in fits)
         # of the cuts that fit as well (to a hundredth), the one through the least ink
-        cuts.append(min((x for fit, x in fits if fit <= best + 0.01),
+        cuts.append(min((x for f, x in fits if f <= best + 0.01),
                         key=lambda x: sum(abs(p[0] - x) < share / 40 for line in fine for p in line)))
         left = cuts[-1]
     return fine, cuts
@@ -255,15 +263,16 @@ def _fit_before(ink, left, right, letter):
     return reading.best.fit if reading is not None and reading.best is not None else math.inf
 
 
-def letters_of(ink, expected):
+def letters_of(ink, expected, ahead=True):
     """The ink's letters, left to right, each as (its ink alone, its ink
     reaching SAMPLE of the height past its cuts: a stroke two touching
     letters share, an M's last leg as an F's stem, is each letter's): set
-    apart by GAP, or where fewer are set apart than `expected` has, cut."""
+    apart by GAP, or where fewer are set apart than `expected` has, cut
+    (cut(), looking `ahead` or not)."""
     groups = apart(ink)
     if len(expected) < 2 or len(groups) >= len(expected):
         return [(group, group) for group in groups]
-    fine, cuts = cut([line for group in groups for line in group], expected)
+    fine, cuts = cut([line for group in groups for line in group], expected, ahead)
     height = box([p for line in fine for p in line])[3]
     return list(zip(columns(fine, cuts), columns(fine, cuts, SAMPLE * height)))
 
@@ -304,8 +313,7 @@ def read_row(ink, expected='') -> List[Reading]:
     for tilt in row_tilts(ink):
         level = turned(ink, -tilt, centre) if tilt else ink
         readings = [_turned_back(r, tilt, centre) for r in _read_letters(level, expected)]
-        score = (sum(r.letter == e for r, e in zip(readings, expected)),
-                 -sum(r.best.fit for r in readings if r.best is not None))
+        score = _score(readings, expected)
         if best is None or score > best[0]:
             best = score, readings
         if score[0] == len(expected):
@@ -327,16 +335,29 @@ def _turned_back(reading, tilt, centre):
     return Reading(letter, best, {c: back(f) for c, f in reading.fits.items()})
 
 
+def _score(readings, expected):
+    """(letters read as expected, less their fits): the larger, the better."""
+    return (sum(r.letter == e for r, e in zip(readings, expected)),
+            -sum(r.best.fit for r in readings if r.best is not None))
+
+
 def _read_letters(ink, expected):
-    """The row's readings, level: set apart, or cut."""
+    """The row's readings, level: set apart, or cut looking ahead, and (a
+    row of three or more that does not read so) cut letter by letter."""
     if len(apart(ink)) >= len(expected):
         return [_of_row(group, ink) for group in apart(ink)]
-    readings = []
-    for letter, (alone, shared) in zip(expected, letters_of(ink, expected)):
-        first = _of_row(alone, ink)
-        second = _of_row(shared, ink) if first.letter != letter else first
-        readings.append(second if second.letter == letter else first)
-    return readings
+    best = None
+    for ahead in (True, False) if len(expected) > 2 else (True,):
+        readings = []
+        for letter, (alone, shared) in zip(expected, letters_of(ink, expected, ahead)):
+            first = _of_row(alone, ink)
+            second = _of_row(shared, ink) if first.letter != letter else first
+            readings.append(second if second.letter == letter else first)
+        if best is None or _score(readings, expected) > _score(best, expected):
+            best = readings
+        if _score(best, expected)[0] == len(expected):
+            break
+    return best
 
 
 def _of_row(part, row):
