@@ -343,11 +343,13 @@ def _score(readings, expected):
 
 def _read_letters(ink, expected):
     """The row's readings, level: set apart, or cut looking ahead, and (a
-    row of three or more that does not read so) cut letter by letter."""
+    row that does not read so) cut letter by letter too, the better kept;
+    or, where as many of its letters read so, each letter set apart read
+    whole: a row unfinished (a U where USI was expected) is fewer letters."""
     if len(apart(ink)) >= len(expected):
         return [_of_row(group, ink) for group in apart(ink)]
     best = None
-    for ahead in (True, False) if len(expected) > 2 else (True,):
+    for ahead in (True, False):
         readings = []
         for letter, (alone, shared) in zip(expected, letters_of(ink, expected, ahead)):
             first = _of_row(alone, ink)
@@ -356,8 +358,9 @@ def _read_letters(ink, expected):
         if best is None or _score(readings, expected) > _score(best, expected):
             best = readings
         if _score(best, expected)[0] == len(expected):
-            break
-    return best
+            return best
+    whole = [_of_row(group, ink) for group in apart(ink)]   # fewer drawn than expected
+    return whole if _score(whole, expected)[0] >= _score(best, expected)[0] else best
 
 
 def _of_row(part, row):

@@ -226,3 +226,12 @@ def test_a_row_cut_from_one_curve_reads_no_letter_lying_on_its_side(start, end, 
     ink = turned([curve(start, end)], tilt, (3.0, 9.0))
     for r in read_row(ink, 'USI'):
         assert r.letter is None or abs(r.best.tilt) <= 52.5, r.best
+
+
+@pytest.mark.parametrize('drawn, expected', [('U', 'USI'), ('ZA', 'ZAK')])
+def test_a_row_with_fewer_letters_than_expected_reads_those_drawn(drawn, expected):
+    """A row never finished (a real class's turtle was cleared while it
+    drew USI's U): the letters drawn read in their places; the ink is not
+    cut into as many letters as were expected."""
+    readings = read_row(row(drawn, 0.3), expected)
+    assert ''.join(r.letter or '?' for r in readings) == drawn, [r.best for r in readings]
