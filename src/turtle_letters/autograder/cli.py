@@ -224,9 +224,12 @@ def _finished(graded, progress, isolated):
 
 
 def _on_signal(handler, on_term=None):
-    """`handler` for Ctrl-C and SIGTERM (or `on_term` for it); the handlers they had."""
+    """`handler` for Ctrl-C and SIGTERM (or `on_term` for it); the handlers
+    they had. (SIG_DFL is 0: `on_term or handler` once gave SIGTERM Ctrl-C's
+    handler back, and under nohup, where Ctrl-C is ignored, ignored SIGTERM
+    in the grader and every child it started after.)"""
     return signal.signal(signal.SIGINT, handler), \
-        signal.signal(signal.SIGTERM, on_term or handler)
+        signal.signal(signal.SIGTERM, handler if on_term is None else on_term)
 
 
 def _interrupt(number, _):

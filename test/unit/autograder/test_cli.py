@@ -52,13 +52,14 @@ def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_g
         tmp_path, monkeypatch):
     def full(*_):
         raise OSError(28, 'No space left on device')
-    before = signal.getsignal(signal.SIGINT)
+    before = signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)
     monkeypatch.setattr(driver.reports, 'write_results', full)
     rows, stopped = ann_and_bob(tmp_path)
     assert stopped == '' and [r.id for r in rows] == ['a1', 'b2']
     assert rows[0].grade.reason == ('It builds: not tried: the grader failed on this '
                                     'submission: OSError: [Errno 28] No space left on device')
-    assert signal.getsignal(signal.SIGINT) is before         # as it was (ignored under nohup)
+    # both as they were: Ctrl-C ignored under nohup, SIGTERM not made so too
+    assert (signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)) == before
 
 
 def test_a_ctrl_c_while_a_picture_is_painted_keeps_its_row_once(tmp_path, monkeypatch, capsys):
