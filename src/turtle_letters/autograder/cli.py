@@ -187,24 +187,24 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     warnings = warnings or {}
     place = Place(hidden, args.isolated, args.jobs, session.caps(rubric.limits))
     ready_to_paint()
-    progress, rows, stopped = Progress(len(students), place), {}, ''
-    before = _on_signal(_first_stop(place))     # before any student starts
-    pool, futures = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs), []
+    progress, rows, asked = Progress(len(students), place), {}, []
+    before = _on_signal(_first_stop(place, asked))     # before any student starts
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs)
     try:
-        for student in students:
-            futures.append(pool.submit(driver.grade, student, rubric, out, place,
-                                       warnings.get(student.id, '')))
+        futures = [pool.submit(driver.grade, student, rubric, out, place,
+                               warnings.get(student.id, '')) for student in students]
         for i, future in enumerate(futures):
+            if not _done_unless_asked(future, asked):
+                break
             rows[i] = _finished(future.result(), progress, args.isolated)
             # each row kept as it comes: a grader killed outright keeps what it graded
             reports.write_csv(os.path.join(out, 'grades.csv'), [rows[j] for j in sorted(rows)])
-    except KeyboardInterrupt as e:
-        stopped = str(e) or 'SIGINT'
-        print(f'\ngrade_class.py: {stopped}: stopping (again to force)', file=sys.stderr,
-              flush=True)
-        place.stop()
-        for future in futures:
-            future.cancel()
+        if asked:
+            print(f'\ngrade_class.py: {asked[0]}: stopping (again to force)', file=sys.stderr,
+                  flush=True)
+            place.stop()
+            for future in futures:
+                future.cancel()
     finally:
         place.stopping.set()
         pool.shutdown(wait=True)
@@ -214,7 +214,15 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
                 future.exception() is None:
             rows[i] = _finished(future.result(), progress, args.isolated)
     progress.close()
-    return [rows[i] for i in sorted(rows)], stopped
+    return [rows[i] for i in sorted(rows)], (asked[0] if asked else '')
+
+
+def _done_unless_asked(future, asked):
+    """True once `future` is done; False as soon as a stop is asked."""
+    while not asked:
+        if concurrent.futures.wait([future], timeout=0.2).done:
+            return True
+    return False
 
 
 def _finished(graded, progress, isolated):
@@ -236,11 +244,15 @@ def _interrupt(number, _):
     raise KeyboardInterrupt(signal.Signals(number).name)
 
 
-def _first_stop(place):
-    """Ctrl-C or SIGTERM while grading: the next one forces, from now on."""
-    def first(number, frame):
+def _first_stop(place, asked):
+    """Ctrl-C or SIGTERM while grading: its name put in `asked`, which
+    grade_all checks between rows; the next one forces, from now on. (An
+    exception raised here could land anywhere in the main thread, even in
+    the pool's own bookkeeping, between a thread's start and its record:
+    the pool then did not wait for that student.)"""
+    def first(number, _):
+        asked.append(signal.Signals(number).name)
         _on_signal(_force(place))
-        _interrupt(number, frame)
     return first
 
 
