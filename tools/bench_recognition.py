@@ -23,7 +23,7 @@ import time
 from turtle_letters.reading.forms import VARIANTS
 from turtle_letters.reading.ink import turned
 from turtle_letters.reading.ocr import read_text, supports
-from turtle_letters.reading.recognition import read_row
+from turtle_letters.reading.rows import read_row
 from turtle_letters.letters.hershey import load_font
 from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
 from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs

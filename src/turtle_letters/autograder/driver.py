@@ -20,7 +20,7 @@ import traceback
 
 from ..isolation.files import shown
 from ..reading.ocr import read_text
-from ..reading.recognition import read_row
+from ..reading.rows import read_row
 from . import observations as seen
 from . import reports, rubric as rubrics, session, submission
 from .roster import Student

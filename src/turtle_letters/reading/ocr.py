@@ -17,7 +17,7 @@ from typing import NamedTuple
 
 from .ink import box, closed, thinned, turned
 from .forms import READABLE
-from .recognition import letters_of, row_tilts
+from .rows import letters_of, row_tilts
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
 PAD_PX = 16

@@ -18,17 +18,13 @@ import numpy
 from scipy.ndimage import distance_transform_edt
 
 from .forms import READABLE, Point, grid_rows, templates
-from .ink import CELL, WIDEST, box, outline, sampled, samples, thinned, turned
+from .ink import CELL, WIDEST, box, outline, sampled, thinned, turned
 
 LEVEL = 0.03        # a fit this good level is not tried tilted
 TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
-NEAR_TILTS = (-10, -5, 5, 10)   # ... when only finding where to cut a row
 FINER = (5.0, 2.5)  # then degrees either way of the best tilts, in turn
 REFINED = 3         # the best-fitting letters whose tilts are tried finer
 MOST_TILT = max(TILTS) + sum(FINER)     # degrees off level a letter is read at, at most
-GAP = 0.1           # clear space between two letters' ink, share of the height of the row
-SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
-SHORT = 0.5         # a letter of a row less high than this share of the row is unfinished, no letter
 SAMPLE = 0.02       # share of the height between compared points
 HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
@@ -114,7 +110,15 @@ class Fitting:
                                            shape.cols(self.drawn[:, 0])].max()))
 
 
-def _fits(ink, letters, beat=None):
+class _Found(NamedTuple):
+    """A letter's best fit while reading: its strokes are placed once, at the end."""
+    fit: float
+    candidate: int      # its index in templates().candidates
+    box: tuple          # the box of the ink it was fitted to, turned back by `tilt`
+    tilt: float = 0.0
+
+
+def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
     """Each letter's best fit to `ink`, as it lies; of a letter whose
     candidates all stray farther than `beat`'s fit of it (or than
     HOPELESS), the bound only, marked so."""
@@ -125,9 +129,10 @@ def _fits(ink, letters, beat=None):
     drawn = (sampled([line for line in ink if line], CELL * h / 2) - (x, y)) / h
     fitting = Fitting(drawn, w / h, letters)
     bounds = fitting.bounds()
-    fits: Dict[str, Fit] = {}
+    candidates = templates().candidates
+    fits: Dict[str, _Found] = {}
     for i in numpy.argsort(bounds):
-        letter, strokes, readable = templates().candidates[fitting.chosen[i]]
+        letter = candidates[fitting.chosen[i]][0]
         best = fits[letter].fit if letter in fits else math.inf
         if bounds[i] >= best:
             continue
@@ -136,7 +141,7 @@ def _fits(ink, letters, beat=None):
         if worth or letter not in fits:
             fit = fitting.fit(i, bounds[i]) if worth else float(bounds[i])
             if fit < best:
-                fits[letter] = Fit(letter, fit, placed(strokes, (x, y, w, h)), 0.0, readable)
+                fits[letter] = _Found(fit, int(fitting.chosen[i]), (x, y, w, h))
     return fits
 
 
@@ -153,22 +158,35 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Readi
     points = [p for line in ink for p in line]
     ink = thinned(ink, SAMPLE * box(points)[3] / 2)
     fits = _fits(ink, letters)
+    x, y, w, h = box(points)
+    centre = (x + w / 2, y + h / 2)
     if min((f.fit for f in fits.values()), default=math.inf) > LEVEL:
-        x, y, w, h = box(points)
-        centre = (x + w / 2, y + h / 2)
         done = {0.0} | set(tilts)
         _tried(ink, letters, fits, tilts, centre)
         for step in finer:
             if min((f.fit for f in fits.values()), default=math.inf) <= LEVEL:
                 break
             near = {f.tilt for f in sorted(fits.values(), key=lambda f: f.fit)[:REFINED]
-                    if f.fit <= 2 * f.readable}
+                    if f.fit <= 2 * _readable(f)}
             more = sorted({t + d for t in near for d in (-step, step)} - done)
             done |= set(more)
             _tried(ink, letters, fits, more, centre)
-    best = min(fits.values(), key=lambda f: f.fit, default=None)
+    placed_fits = {letter: _placed(letter, f, centre) for letter, f in fits.items()}
+    best = min(placed_fits.values(), key=lambda f: f.fit, default=None)
     letter = best.letter if best is not None and best.fit <= best.readable else None
-    return Reading(letter, best, fits)
+    return Reading(letter, best, placed_fits)
+
+
+def _readable(found):
+    return templates().candidates[found.candidate][2]
+
+
+def _placed(letter, found, centre):
+    """The Fit of a letter found: its candidate's strokes on the ink's box, turned with it."""
+    strokes = placed(templates().candidates[found.candidate][1], found.box)
+    if found.tilt:
+        strokes = turned(strokes, found.tilt, centre)
+    return Fit(letter, found.fit, strokes, found.tilt, _readable(found))
 
 
 def _tried(ink, letters, fits, tilts, centre):
@@ -177,211 +195,6 @@ def _tried(ink, letters, fits, tilts, centre):
         level = turned(ink, -tilt, centre)
         if box([p for line in level for p in line])[3] <= 0:
             continue
-        for letter, fit in _fits(level, letters, fits).items():
-            if fit.fit < fits.get(letter, fit._replace(fit=math.inf)).fit:
-                fits[letter] = fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=tilt)
-
-
-def apart(ink):
-    """The ink's letters, left to right: lines whose spans across overlap,
-    or lie less than GAP of the row's height apart, are one letter's."""
-    lines = sorted((line for line in ink if line), key=lambda line: min(p[0] for p in line))
-    if not lines:
-        return []
-    height = box([p for line in lines for p in line])[3]
-    groups = []         # [lines, right edge]
-    for line in lines:
-        left, right = min(p[0] for p in line), max(p[0] for p in line)
-        if groups and left <= groups[-1][1] + GAP * height:
-            groups[-1][0].append(line)
-            groups[-1][1] = max(groups[-1][1], right)
-        else:
-            groups.append([[line], right])
-    return [group for group, _ in groups]
-
-
-def columns(ink, cuts, overlap=0.0):
-    """The ink split at the x of each of `cuts` (ascending): each line's
-    parts between two cuts, as the letters between them; a part reaches
-    `overlap` past its cuts (a stroke two touching letters share, an M's
-    last leg as an F's stem, is each letter's)."""
-    bounds = list(zip([-math.inf] + list(cuts), list(cuts) + [math.inf]))
-    letters = []
-    for lo, hi in bounds:
-        parts = []
-        for line in ink:
-            run = []
-            for p in line:
-                if lo - overlap < p[0] <= hi + overlap:
-                    run.append(p)
-                elif run:
-                    parts.append(run)
-                    run = []
-            if run:
-                parts.append(run)
-        letters.append(parts)
-    return letters
-
-
-def cut(ink, expected, ahead=True):
-    """Where to cut the ink into the letters of `expected` side by side, its
-    letters touching (a Z's foot run on into an A's leg): each cut, left to
-    right, between 0.4 and 1.6 of an even share of the row, where the part
-    before it fits its expected letter best and, `ahead`, the part after it
-    fits the next letter too (the last cut: the rest as the last letter;
-    an earlier one: the next even share). The ink (finely sampled) and the cuts."""
-    height = box([p for line in ink for p in line])[3]
-    fine = [samples([line], SAMPLE * height / 2) for line in ink if line]
-    x0, _, width, _ = box([p for line in fine for p in line])
-    share, cuts, left = width / len(expected), [], x0 - 1e-9     # a part is (left, right]
-    for k, letter in enumerate(expected[:-1]):
-        def fit(x):
-            before = _fit_before(fine, left, x, letter)
-            if not ahead:
-                return before
-            last = k == len(expected) - 2
-            return max(before, _fit_before(fine, x, x0 + width + 1 if last else x + share,
-                                           expected[k + 1]))
-        # every tenth of a share, then the twentieths beside the best of those
-        options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
-        options = [x for x in options if x < x0 + width] or [left + share]
-        fits = [(fit(x), x) for x in options]
-        nearest = min(fits)[1]
-        fits += [(fit(x), x) for x in (nearest - share / 20, nearest + share / 20)
-                 if left < x < x0 + width]
-        best = min(f for f, _ in fits)
-        # of the cuts that fit as well (to a hundredth), the one through the least ink
-        cuts.append(min((x for f, x in fits if f <= best + 0.01),
-                        key=lambda x: sum(abs(p[0] - x) < share / 40 for line in fine for p in line)))
-        left = cuts[-1]
-    return fine, cuts
-
-
-def _fit_before(ink, left, right, letter):
-    part = columns(ink, [left, right])[1]
-    reading = read(part, letter, NEAR_TILTS, ()) if part else None
-    return reading.best.fit if reading is not None and reading.best is not None else math.inf
-
-
-def letters_of(ink, expected, ahead=True):
-    """The ink's letters, left to right, each as (its ink alone, its ink
-    reaching SAMPLE of the height past its cuts: a stroke two touching
-    letters share, an M's last leg as an F's stem, is each letter's): set
-    apart by GAP, or where fewer are set apart than `expected` has, cut
-    (cut(), looking `ahead` or not)."""
-    groups = apart(ink)
-    if len(expected) < 2 or len(groups) >= len(expected):
-        return [(group, group) for group in groups]
-    fine, cuts = cut([line for group in groups for line in group], expected, ahead)
-    height = box([p for line in fine for p in line])[3]
-    return list(zip(columns(fine, cuts), columns(fine, cuts, SAMPLE * height)))
-
-
-def row_tilts(ink):
-    """Degrees a row of letters may lie off level, the likelier first: the
-    turn within 50 degrees of level, in steps of 5, that leaves the row
-    least high (a row is level where its letters stand side by side), then 0."""
-    points = numpy.array([p for line in ink for p in line])
-    if len(points) < 3:
-        return [0]
-    angles = numpy.radians(numpy.arange(-50, 55, 5))
-    heights = [numpy.ptp(points[:, 1] * math.cos(a) - points[:, 0] * math.sin(a)) for a in angles]
-    slope = int(round(math.degrees(angles[int(numpy.argmin(heights))])))
-    return ([slope] if slope else []) + [0]
-
-
-def read_row(ink, expected='') -> List[Reading]:
-    """The letters `ink` draws, left to right: the whole read as one when
-    one letter is expected, else each letter set apart by GAP read alone;
-    where fewer are set apart than expected, the ink is cut into them, and
-    a letter cut is its expected letter if it reads so alone or with the
-    strokes it shares. A row that does not read so level is read turned
-    back by its slope (row_tilts). The cuts only find the letters; a
-    reading of all the letters says what each is. Specks are no part of
-    it (without_specks), and a letter of a row less than SHORT of the
-    row's height reads as no letter (unfinished: a quarter of an S's curve
-    beside a whole U is no I)."""
-    ink = without_specks(ink)
-    count = len(expected) if isinstance(expected, str) else expected
-    if count <= 1:
-        return [read(ink)]
-    if not isinstance(expected, str):
-        return [_of_row(group, ink) for group in apart(ink)]
-    points = [p for line in ink for p in line]
-    x, y, w, h = box(points)
-    centre, best = (x + w / 2, y + h / 2), None
-    for tilt in row_tilts(ink):
-        level = turned(ink, -tilt, centre) if tilt else ink
-        readings = [_turned_back(r, tilt, centre) for r in _read_letters(level, expected)]
-        score = _score(readings, expected)
-        if best is None or score > best[0]:
-            best = score, readings
-        if score[0] == len(expected):
-            break
-    return best[1]
-
-
-def _turned_back(reading, tilt, centre):
-    """A reading of ink turned back by `tilt`, as the ink lies: no letter
-    where the two tilts add up to more than a letter is read at alone
-    (MOST_TILT: a J lying on its side is no J)."""
-    if not tilt:
-        return reading
-
-    def back(fit):
-        return fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=fit.tilt + tilt)
-    best = reading.best and back(reading.best)
-    letter = reading.letter if best is None or abs(best.tilt) <= MOST_TILT else None
-    return Reading(letter, best, {c: back(f) for c, f in reading.fits.items()})
-
-
-def _score(readings, expected):
-    """(letters read as expected, less their fits): the larger, the better."""
-    return (sum(r.letter == e for r, e in zip(readings, expected)),
-            -sum(r.best.fit for r in readings if r.best is not None))
-
-
-def _read_letters(ink, expected):
-    """The row's readings, level: set apart, or cut looking ahead, and (a
-    row that does not read so) cut letter by letter too, the better kept;
-    or, where as many of its letters read so, each letter set apart read
-    whole: a row unfinished (a U where USI was expected) is fewer letters."""
-    if len(apart(ink)) >= len(expected):
-        return [_of_row(group, ink) for group in apart(ink)]
-    best = None
-    for ahead in (True, False):
-        readings = []
-        for letter, (alone, shared) in zip(expected, letters_of(ink, expected, ahead)):
-            first = _of_row(alone, ink)
-            second = _of_row(shared, ink) if first.letter != letter else first
-            readings.append(second if second.letter == letter else first)
-        if best is None or _score(readings, expected) > _score(best, expected):
-            best = readings
-        if _score(best, expected)[0] == len(expected):
-            return best
-    whole = [_of_row(group, ink) for group in apart(ink)]   # fewer drawn than expected
-    return whole if _score(whole, expected)[0] >= _score(best, expected)[0] else best
-
-
-def _of_row(part, row):
-    """The reading of `part`, a letter of `row`: none where it stands less
-    than SHORT of the row's height (its best fit kept, for the report)."""
-    reading = read(part)
-    if part and box([p for line in part for p in line])[3] < SHORT * box(
-            [p for line in row for p in line])[3]:
-        return Reading(None, reading.best, reading.fits)
-    return reading
-
-
-def without_specks(ink):
-    """`ink` less its specks: ink set apart (apart()) whose extent is under
-    SPECK of all the ink's (a turtle spawned with its pen down, a nudge)."""
-    points = [p for line in ink for p in line]
-    if len(points) < 2:
-        return ink
-    _, _, w, h = box(points)
-
-    def extent(group):
-        _, _, gw, gh = box([p for line in group for p in line])
-        return max(gw, gh)
-    return [line for group in apart(ink) if extent(group) >= SPECK * max(w, h) for line in group]
+        for letter, found in _fits(level, letters, fits).items():
+            if letter not in fits or found.fit < fits[letter].fit:
+                fits[letter] = found._replace(tilt=tilt)

@@ -9,7 +9,7 @@ from turtle_letters.autograder.observations import Drawing
 from turtle_letters.autograder.rubric import CRITERIA, Facts, Limits, RubricError, grade, load
 from turtle_letters.autograder.session import Step
 from turtle_letters.reading.ocr import read_text
-from turtle_letters.reading.recognition import read_row
+from turtle_letters.reading.rows import read_row
 
 from support.glyph_rows import row
 

@@ -45,7 +45,7 @@ def test_a_letter_turned_a_quarter_is_not_credited_where_the_strokes_read_it_lev
     way, OCR reads an N, 90% sure or more (the recognition benchmark once
     credited it so). The strokes read a Z, cleanly: no N is credited."""
     from turtle_letters.letters.hershey import load_font
-    from turtle_letters.reading.recognition import read_row
+    from turtle_letters.reading.rows import read_row
     wide = [[(1.711 * x, y) for x, y in stroke]
             for stroke in load_font('gothiceng').glyph('Z').strokes]
     ink = turned(wide, tilt, (0.0, 0.0))
@@ -61,7 +61,7 @@ def test_a_letter_the_strokes_read_cleanly_as_another_is_not_credited_by_ocr(asp
     height. The two readers each see a letter plainly and differ: no Q
     is credited (the recognition benchmark once credited it so)."""
     from turtle_letters.letters.hershey import load_font
-    from turtle_letters.reading.recognition import read_row
+    from turtle_letters.reading.rows import read_row
     o = [[(aspect * x, y) for x, y in stroke] for stroke in load_font('scripts').glyph('O').strokes]
     ink = turned(o, tilt, (0.0, 0.0))
     ocr, strokes = read_text(ink, 'Q'), read_row(ink, 'Q')

@@ -8,7 +8,8 @@ import string
 import pytest
 
 from turtle_letters.reading.ink import MAX_POINTS, outline, thinned, turned
-from turtle_letters.reading.recognition import apart, read, read_row
+from turtle_letters.reading.recognition import read
+from turtle_letters.reading.rows import apart, read_row
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import placed, retraced, rounded

@@ -1,0 +1,272 @@
+"""The letters a row of ink draws, left to right, as a cadet draws their
+initials: set apart where clear space parts them, else cut where the
+parts read as the letters expected; the row read turned back by its
+slope; specks and unfinished letters no letter. Each letter is read by
+recognition.read. No ROS here.
+
+A row is cut several ways (looking ahead or not, turned back or level),
+and the ways share parts: a Row works out each part's fit and reading
+once. A way of cutting is read whole only where it may read more letters
+in place than the best so far: each part is first read as its expected
+letter alone, which is cheap, and a part that does not read so cannot
+read so among all 26.
+"""
+import math
+import string
+from typing import List
+
+import numpy
+
+from .ink import box, samples, turned
+from .recognition import MOST_TILT, SAMPLE, Reading, read
+
+GAP = 0.1           # clear space between two letters' ink, share of the height of the row
+SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
+SHORT = 0.5         # a letter of a row less high than this share of the row is unfinished, no letter
+NEAR_TILTS = (-10, -5, 5, 10)   # degrees a part is tried off level when finding where to cut
+
+
+class Row:
+    """A row's ink, finely sampled, and what was worked out about its
+    parts: how well the part between two x fits a letter (near level),
+    and the reading of a part, each once."""
+
+    def __init__(self, ink):
+        self.ink = ink
+        self.height = box([p for line in ink for p in line])[3]
+        self.fine = [samples([line], SAMPLE * self.height / 2) for line in ink if line]
+        self.x0, _, self.width, _ = box([p for line in self.fine for p in line])
+        self._fits, self._readings = {}, {}
+
+    def fit(self, left, right, letter):
+        """How far the part between x `left` (not included) and `right`
+        strays from `letter`, at best, near level; inf with no ink there."""
+        key = (left, right, letter)
+        if key not in self._fits:
+            part = columns(self.fine, [left, right])[1]
+            reading = read(part, letter, NEAR_TILTS, ()) if part else None
+            self._fits[key] = reading.best.fit if reading and reading.best else math.inf
+        return self._fits[key]
+
+    def letters(self, cuts):
+        """Each letter between `cuts`, as (its ink alone, its ink reaching
+        SAMPLE of the height past its cuts: a stroke two touching letters
+        share, an M's last leg as an F's stem, is each letter's)."""
+        return list(zip(columns(self.fine, cuts), columns(self.fine, cuts, SAMPLE * self.height)))
+
+    def reading(self, part, letters=string.ascii_uppercase):
+        """The reading of `part`, a letter of this row, as one of `letters`:
+        none where it stands less than SHORT of the row's height (its best
+        fit kept, for the report)."""
+        key = (tuple(tuple(tuple(p) for p in line) for line in part), letters)
+        if key not in self._readings:
+            reading = read(part, letters)
+            if part and box([p for line in part for p in line])[3] < SHORT * self.height:
+                reading = Reading(None, reading.best, reading.fits)
+            self._readings[key] = reading
+        return self._readings[key]
+
+
+def apart(ink):
+    """The ink's letters, left to right: lines whose spans across overlap,
+    or lie less than GAP of the row's height apart, are one letter's."""
+    lines = sorted((line for line in ink if line), key=lambda line: min(p[0] for p in line))
+    if not lines:
+        return []
+    height = box([p for line in lines for p in line])[3]
+    groups = []         # [lines, right edge]
+    for line in lines:
+        left, right = min(p[0] for p in line), max(p[0] for p in line)
+        if groups and left <= groups[-1][1] + GAP * height:
+            groups[-1][0].append(line)
+            groups[-1][1] = max(groups[-1][1], right)
+        else:
+            groups.append([[line], right])
+    return [group for group, _ in groups]
+
+
+def columns(ink, cuts, overlap=0.0):
+    """The ink split at the x of each of `cuts` (ascending): each line's
+    parts between two cuts, as the letters between them; a part reaches
+    `overlap` past its cuts."""
+    bounds = list(zip([-math.inf] + list(cuts), list(cuts) + [math.inf]))
+    letters = []
+    for lo, hi in bounds:
+        parts = []
+        for line in ink:
+            run = []
+            for p in line:
+                if lo - overlap < p[0] <= hi + overlap:
+                    run.append(p)
+                elif run:
+                    parts.append(run)
+                    run = []
+            if run:
+                parts.append(run)
+        letters.append(parts)
+    return letters
+
+
+def cut(row, expected, ahead=True):
+    """Where to cut `row` (a Row) into the letters of `expected` side by
+    side, its letters touching (a Z's foot run on into an A's leg): each
+    cut, left to right, between 0.4 and 1.6 of an even share of the row,
+    where the part before it fits its expected letter best and, `ahead`,
+    the part after it fits the next letter too (the last cut: the rest
+    as the last letter; an earlier one: the next even share)."""
+    end = row.x0 + row.width
+    share, cuts, left = row.width / len(expected), [], row.x0 - 1e-9     # a part is (left, right]
+    for k, letter in enumerate(expected[:-1]):
+        def fit(x):
+            before = row.fit(left, x, letter)
+            if not ahead:
+                return before
+            return max(before, row.fit(x, end + 1 if k == len(expected) - 2 else x + share,
+                                       expected[k + 1]))
+        # every tenth of a share, then the twentieths beside the best of those
+        options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
+        options = [x for x in options if x < end] or [left + share]
+        fits = [(fit(x), x) for x in options]
+        nearest = min(fits)[1]
+        fits += [(fit(x), x) for x in (nearest - share / 20, nearest + share / 20) if left < x < end]
+        best = min(f for f, _ in fits)
+        # of the cuts that fit as well (to a hundredth), the one through the least ink
+        cuts.append(min((x for f, x in fits if f <= best + 0.01),
+                        key=lambda x: sum(abs(p[0] - x) < share / 40 for line in row.fine for p in line)))
+        left = cuts[-1]
+    return cuts
+
+
+def letters_of(ink, expected, ahead=True):
+    """The ink's letters, left to right, each as (its ink alone, its ink
+    with the strokes it shares: Row.letters): set apart by GAP, or where
+    fewer are set apart than `expected` has, cut (cut(), looking `ahead`
+    or not)."""
+    groups = apart(ink)
+    if len(expected) < 2 or len(groups) >= len(expected):
+        return [(group, group) for group in groups]
+    row = Row([line for group in groups for line in group])
+    return row.letters(cut(row, expected, ahead))
+
+
+def row_tilts(ink):
+    """Degrees a row of letters may lie off level, the likelier first: the
+    turn within 50 degrees of level, in steps of 5, that leaves the row
+    least high (a row is level where its letters stand side by side), then 0."""
+    points = numpy.array([p for line in ink for p in line])
+    if len(points) < 3:
+        return [0]
+    angles = numpy.radians(numpy.arange(-50, 55, 5))
+    heights = [numpy.ptp(points[:, 1] * math.cos(a) - points[:, 0] * math.sin(a)) for a in angles]
+    slope = int(round(math.degrees(angles[int(numpy.argmin(heights))])))
+    return ([slope] if slope else []) + [0]
+
+
+def read_row(ink, expected='') -> List[Reading]:
+    """The letters `ink` draws, left to right: the whole read as one when
+    one letter is expected, else each letter set apart by GAP read alone;
+    where fewer are set apart than expected, the ink is cut into them, and
+    a letter cut is its expected letter if it reads so alone or with the
+    strokes it shares. A row that does not read so level is read turned
+    back by its slope (row_tilts). The cuts only find the letters; a
+    reading of all the letters says what each is. Specks are no part of
+    it (without_specks), and a letter of a row less than SHORT of the
+    row's height reads as no letter (unfinished: a quarter of an S's curve
+    beside a whole U is no I)."""
+    ink = without_specks(ink)
+    count = len(expected) if isinstance(expected, str) else expected
+    if count <= 1:
+        return [read(ink)]
+    if not isinstance(expected, str):
+        row = Row(ink)
+        return [row.reading(group) for group in apart(ink)]
+    x, y, w, h = box([p for line in ink for p in line])
+    centre, best = (x + w / 2, y + h / 2), None
+    for tilt in row_tilts(ink):
+        level = turned(ink, -tilt, centre) if tilt else ink
+        readings = [_turned_back(r, tilt, centre) for r in _read_letters(Row(level), expected)]
+        if best is None or _score(readings, expected) > _score(best, expected):
+            best = readings
+        if _score(best, expected)[0] == len(expected):
+            break
+    return best
+
+
+def _turned_back(reading, tilt, centre):
+    """A reading of ink turned back by `tilt`, as the ink lies: no letter
+    where the two tilts add up to more than a letter is read at alone
+    (MOST_TILT: a J lying on its side is no J)."""
+    if not tilt:
+        return reading
+
+    def back(fit):
+        return fit._replace(strokes=turned(fit.strokes, tilt, centre), tilt=fit.tilt + tilt)
+    best = reading.best and back(reading.best)
+    letter = reading.letter if best is None or abs(best.tilt) <= MOST_TILT else None
+    return Reading(letter, best, {c: back(f) for c, f in reading.fits.items()})
+
+
+def _score(readings, expected):
+    """(letters read as expected, less their fits): the larger, the better."""
+    return (sum(r.letter == e for r, e in zip(readings, expected)),
+            -sum(r.best.fit for r in readings if r.best is not None))
+
+
+def _read_letters(row, expected):
+    """The row's readings, level: its letters set apart; or cut looking
+    ahead, and (a row that does not read so) cut letter by letter too, the
+    better kept; or, where as many of its letters read in place so, each
+    letter set apart read whole: a row unfinished (a U where USI was
+    expected) is fewer letters. A way is read whole only where it may
+    read more letters in place than the best so far (_hoped)."""
+    groups = apart(row.ink)
+    if len(groups) >= len(expected):
+        return [row.reading(group) for group in groups]
+    best = None
+    for ahead in (True, False):
+        letters = row.letters(cut(row, expected, ahead))
+        if best is not None and _hoped(row, letters, expected) <= _score(best, expected)[0]:
+            continue
+        readings = [_as_expected(row, letter, alone, shared)
+                    for letter, (alone, shared) in zip(expected, letters)]
+        if best is None or _score(readings, expected) > _score(best, expected):
+            best = readings
+        if _score(best, expected)[0] == len(expected):
+            return best
+    whole = [(group, group) for group in apart(row.ink)]     # fewer drawn than expected
+    if _hoped(row, whole, expected) < max(1, _score(best, expected)[0]):
+        return best
+    whole = [row.reading(group) for group, _ in whole]
+    return whole if _score(whole, expected)[0] >= _score(best, expected)[0] else best
+
+
+def _hoped(row, letters, expected):
+    """How many of `letters` ((alone, shared) each) may read as expected in
+    place, at most: those that read so as their expected letter alone."""
+    return sum(row.reading(alone, letter).letter == letter or
+               row.reading(shared, letter).letter == letter
+               for letter, (alone, shared) in zip(expected, letters))
+
+
+def _as_expected(row, letter, alone, shared):
+    """The reading of a letter cut: `alone`, or with the strokes it shares
+    where only so it reads as `letter`."""
+    first = row.reading(alone)
+    if first.letter == letter:
+        return first
+    second = row.reading(shared)
+    return second if second.letter == letter else first
+
+
+def without_specks(ink):
+    """`ink` less its specks: ink set apart (apart()) whose extent is under
+    SPECK of all the ink's (a turtle spawned with its pen down, a nudge)."""
+    points = [p for line in ink for p in line]
+    if len(points) < 2:
+        return ink
+    _, _, w, h = box(points)
+
+    def extent(group):
+        _, _, gw, gh = box([p for line in group for p in line])
+        return max(gw, gh)
+    return [line for group in apart(ink) if extent(group) >= SPECK * max(w, h) for line in group]
