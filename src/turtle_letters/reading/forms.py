@@ -12,6 +12,7 @@ from .ink import CELL, box, outline, samples
 
 Point = Tuple[float, float]
 READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
+SPARSE = 3          # a candidate's bound is taken on every SPARSE-th of its points
 
 _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
 _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
@@ -114,8 +115,12 @@ class Templates:
             slot = numpy.searchsorted(chosen, self.owner[indices])
             starts = numpy.r_[numpy.flatnonzero(numpy.r_[True, slot[1:] != slot[:-1]]), len(slot)]
             points = self.points[indices]
-            self._chosen[letters] = Choice(numpy.array(chosen, dtype=int), points[:, 0],
-                                           points[:, 1], grid_rows(points[:, 1]), slot, starts)
+            # every SPARSE-th point of each, its first among them: a bound needs no more
+            sparse = numpy.flatnonzero((numpy.arange(len(slot)) - starts[slot]) % SPARSE == 0)
+            self._chosen[letters] = Choice(
+                numpy.array(chosen, dtype=int), points[:, 0], points[:, 1],
+                grid_rows(points[:, 1]), slot, starts, sparse,
+                numpy.r_[numpy.searchsorted(sparse, starts[:-1]), len(sparse)])
         return self._chosen[letters]
 
 
@@ -127,6 +132,8 @@ class Choice(NamedTuple):
     rows: numpy.ndarray     # ... and their rows of a grid of CELL
     slot: numpy.ndarray     # each point's candidate, 0 to len(chosen) - 1
     starts: numpy.ndarray   # where each candidate's points start, and the last ends
+    sparse: numpy.ndarray   # which points a bound is taken on
+    sparse_starts: numpy.ndarray    # where each candidate's start in `sparse`, and the last ends
 
 
 def grid_rows(ys):

@@ -86,9 +86,8 @@ class Fitting:
         self.drawn, self.choice = drawn, t.of(letters)
         own = numpy.array(t.aspects)[self.choice.chosen]
         width = numpy.clip(aspect, own / MAX_STRETCH, own * MAX_STRETCH)
-        across = numpy.divide(width, own, out=numpy.zeros_like(own), where=own > 0)
-        slot = self.choice.slot
-        self.xs = ((aspect - width) / 2)[slot] + self.choice.xs * across[slot]
+        self.across = numpy.divide(width, own, out=numpy.zeros_like(own), where=own > 0)
+        self.left = (aspect - width) / 2
         self.lo, self.hi = min(0.0, (aspect - width.max()) / 2), max(aspect, (aspect + width.max()) / 2)
         self.ink = Distances(drawn[:, 0], drawn[:, 1], self.lo, self.hi)
 
@@ -96,18 +95,25 @@ class Fitting:
     def chosen(self):
         return self.choice.chosen
 
-    def bounds(self):
-        """Each candidate's farthest point from the ink: its fit is no less."""
-        rows = numpy.clip(self.choice.rows, 0, self.ink.grid.shape[0] - 1)
-        return numpy.maximum.reduceat(self.ink.grid[rows, self.ink.cols(self.xs)],
-                                      self.choice.starts[:-1])
+    def _on_ink(self, points):
+        """How far from the ink each of the choice's `points` (indices) lies, placed."""
+        slot = self.choice.slot[points]
+        xs = self.left[slot] + self.choice.xs[points] * self.across[slot]
+        rows = numpy.clip(self.choice.rows[points], 0, self.ink.grid.shape[0] - 1)
+        return self.ink.grid[rows, self.ink.cols(xs)]
 
-    def fit(self, i, bound):
-        """Candidate i's fit: the worse of its bound and how far the ink strays from it."""
-        part = slice(self.choice.starts[i], self.choice.starts[i + 1])
-        shape = Distances(self.xs[part], self.choice.ys[part], self.lo, self.hi)
-        return max(bound, float(shape.grid[shape.rows(self.drawn[:, 1]),
-                                           shape.cols(self.drawn[:, 0])].max()))
+    def bounds(self):
+        """Each candidate's farthest point from the ink, of its sparse ones: its fit is no less."""
+        return numpy.maximum.reduceat(self._on_ink(self.choice.sparse),
+                                      self.choice.sparse_starts[:-1])
+
+    def fit(self, i):
+        """Candidate i's fit: how far it strays from the ink, or the ink from it, the worse."""
+        part = numpy.arange(self.choice.starts[i], self.choice.starts[i + 1])
+        xs = self.left[i] + self.choice.xs[part] * self.across[i]
+        shape = Distances(xs, self.choice.ys[part], self.lo, self.hi)
+        return max(float(self._on_ink(part).max()),
+                   float(shape.grid[shape.rows(self.drawn[:, 1]), shape.cols(self.drawn[:, 0])].max()))
 
 
 class _Found(NamedTuple):
@@ -116,12 +122,16 @@ class _Found(NamedTuple):
     candidate: int      # its index in templates().candidates
     box: tuple          # the box of the ink it was fitted to, turned back by `tilt`
     tilt: float = 0.0
+    exact: bool = True  # False: a bound, the fit no less
 
 
 def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
-    """Each letter's best fit to `ink`, as it lies; of a letter whose
-    candidates all stray farther than `beat`'s fit of it (or than
-    HOPELESS), the bound only, marked so."""
+    """Each letter's best fit to `ink`, as it lies: exact for the REFINED
+    best-fitting letters, and each other's no better than theirs. A
+    candidate is fitted exactly only where its bound is under HOPELESS
+    and below the REFINED-th best letter's fit so far, here and in `beat`
+    (the ink at other tilts); a letter none of whose candidates was has
+    its least bound, marked so."""
     points = [p for line in ink for p in line]
     x, y, w, h = box(points)
     if w > WIDEST * h:
@@ -131,30 +141,45 @@ def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
     bounds = fitting.bounds()
     candidates = templates().candidates
     fits: Dict[str, _Found] = {}
+    exact = {c: f.fit for c, f in (beat or {}).items() if f.exact}
+    limit = _limit(exact)
     for i in numpy.argsort(bounds):
         letter = candidates[fitting.chosen[i]][0]
         best = fits[letter].fit if letter in fits else math.inf
         if bounds[i] >= best:
             continue
-        worth = bounds[i] <= HOPELESS and (beat is None or letter not in beat or
-                                           bounds[i] < beat[letter].fit)
-        if worth or letter not in fits:
-            fit = fitting.fit(i, bounds[i]) if worth else float(bounds[i])
-            if fit < best:
-                fits[letter] = _Found(fit, int(fitting.chosen[i]), (x, y, w, h))
+        if bounds[i] < limit and bounds[i] <= HOPELESS:
+            found = _Found(fitting.fit(i), int(fitting.chosen[i]), (x, y, w, h))
+            if found.fit < exact.get(letter, math.inf):
+                exact[letter] = found.fit
+                limit = _limit(exact)
+        elif letter not in fits:
+            found = _Found(float(bounds[i]), int(fitting.chosen[i]), (x, y, w, h), exact=False)
+        else:
+            continue
+        if found.fit < best:
+            fits[letter] = found
     return fits
 
 
-def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Reading:
+def _limit(exact):
+    """The REFINED-th best of some letters' fits: a candidate bounded above it is no better."""
+    best = sorted(exact.values())[:REFINED]
+    return best[-1] if len(best) == REFINED else math.inf
+
+
+def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER, exact='') -> Reading:
     """The letter of `letters` that `ink` (lines of (x, y), m) draws, best
     fit first; ink that fits no letter well level is tried turned back by
     each of TILTS, then by `finer` steps around the tilts that fit best
     (a wide letter 5 degrees off strays a tenth of its height); its fits
-    keep the tilt (their strokes turned with it)."""
+    keep the tilt (their strokes turned with it). The best fit is exact;
+    another letter's is no better than it (_fits), but exact for those
+    of `exact` (the letters expected: OCR may credit them)."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
-    ink = outline(ink) or ink       # an outline is read by its middle line
+    given, ink = ink, outline(ink) or ink       # an outline is read by its middle line
     points = [p for line in ink for p in line]
     ink = thinned(ink, SAMPLE * box(points)[3] / 2)
     fits = _fits(ink, letters)
@@ -173,6 +198,9 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Readi
             _tried(ink, letters, fits, more, centre)
     placed_fits = {letter: _placed(letter, f, centre) for letter, f in fits.items()}
     best = min(placed_fits.values(), key=lambda f: f.fit, default=None)
+    for other in set(exact) - {best and best.letter}:
+        alone = read(given, other, tilts, finer).best
+        placed_fits.update({other: alone} if alone else {})
     letter = best.letter if best is not None and best.fit <= best.readable else None
     return Reading(letter, best, placed_fits)
 

@@ -11,6 +11,7 @@ in place than the best so far: each part is first read as its expected
 letter alone, which is cheap, and a part that does not read so cannot
 read so among all 26.
 """
+import itertools
 import math
 import string
 from typing import List
@@ -54,13 +55,13 @@ class Row:
         share, an M's last leg as an F's stem, is each letter's)."""
         return list(zip(columns(self.fine, cuts), columns(self.fine, cuts, SAMPLE * self.height)))
 
-    def reading(self, part, letters=string.ascii_uppercase):
-        """The reading of `part`, a letter of this row, as one of `letters`:
-        none where it stands less than SHORT of the row's height (its best
-        fit kept, for the report)."""
-        key = (tuple(tuple(tuple(p) for p in line) for line in part), letters)
+    def reading(self, part, letters=string.ascii_uppercase, exact=''):
+        """The reading of `part`, a letter of this row, as one of `letters`
+        (read(), its fit to `exact` exact): none where it stands less than
+        SHORT of the row's height (its best fit kept, for the report)."""
+        key = (tuple(tuple(tuple(p) for p in line) for line in part), letters, exact)
         if key not in self._readings:
-            reading = read(part, letters)
+            reading = read(part, letters, exact=exact)
             if part and box([p for line in part for p in line])[3] < SHORT * self.height:
                 reading = Reading(None, reading.best, reading.fits)
             self._readings[key] = reading
@@ -176,7 +177,7 @@ def read_row(ink, expected='') -> List[Reading]:
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
     if count <= 1:
-        return [read(ink)]
+        return [read(ink, exact=expected if isinstance(expected, str) else '')]
     if not isinstance(expected, str):
         row = Row(ink)
         return [row.reading(group) for group in apart(ink)]
@@ -184,9 +185,12 @@ def read_row(ink, expected='') -> List[Reading]:
     centre, best = (x + w / 2, y + h / 2), None
     for tilt in row_tilts(ink):
         level = turned(ink, -tilt, centre) if tilt else ink
-        readings = [_turned_back(r, tilt, centre) for r in _read_letters(Row(level), expected)]
-        if best is None or _score(readings, expected) > _score(best, expected):
-            best = readings
+        floor = -1 if best is None else _score(best, expected)[0]
+        readings = _read_letters(Row(level), expected, floor)
+        if readings is not None:
+            readings = [_turned_back(r, tilt, centre) for r in readings]
+            if best is None or _score(readings, expected) > _score(best, expected):
+                best = readings
         if _score(best, expected)[0] == len(expected):
             break
     return best
@@ -212,20 +216,23 @@ def _score(readings, expected):
             -sum(r.best.fit for r in readings if r.best is not None))
 
 
-def _read_letters(row, expected):
+def _read_letters(row, expected, floor=-1):
     """The row's readings, level: its letters set apart; or cut looking
     ahead, and (a row that does not read so) cut letter by letter too, the
     better kept; or, where as many of its letters read in place so, each
     letter set apart read whole: a row unfinished (a U where USI was
     expected) is fewer letters. A way is read whole only where it may
-    read more letters in place than the best so far (_hoped)."""
+    read more letters in place than `floor` and the best way so far
+    (_hoped); None where none may."""
     groups = apart(row.ink)
     if len(groups) >= len(expected):
-        return [row.reading(group) for group in groups]
+        return [row.reading(group, exact=letter)
+                for group, letter in itertools.zip_longest(groups, expected[:len(groups)], fillvalue='')]
     best = None
     for ahead in (True, False):
         letters = row.letters(cut(row, expected, ahead))
-        if best is not None and _hoped(row, letters, expected) <= _score(best, expected)[0]:
+        beat = floor if best is None else _score(best, expected)[0]
+        if beat >= 0 and _hoped(row, letters, expected) <= beat:
             continue
         readings = [_as_expected(row, letter, alone, shared)
                     for letter, (alone, shared) in zip(expected, letters)]
@@ -233,11 +240,13 @@ def _read_letters(row, expected):
             best = readings
         if _score(best, expected)[0] == len(expected):
             return best
-    whole = [(group, group) for group in apart(row.ink)]     # fewer drawn than expected
-    if _hoped(row, whole, expected) < max(1, _score(best, expected)[0]):
+    whole = [(group, group) for group in groups]     # fewer drawn than expected
+    beat = floor if best is None else _score(best, expected)[0]
+    if _hoped(row, whole, expected) < max(1, beat):
         return best
-    whole = [row.reading(group) for group, _ in whole]
-    return whole if _score(whole, expected)[0] >= _score(best, expected)[0] else best
+    whole = [row.reading(group, exact=letter) for (group, _), letter in zip(whole, expected)]
+    return whole if best is None or _score(whole, expected)[0] >= _score(best, expected)[0] \
+        else best
 
 
 def _hoped(row, letters, expected):
@@ -250,11 +259,12 @@ def _hoped(row, letters, expected):
 
 def _as_expected(row, letter, alone, shared):
     """The reading of a letter cut: `alone`, or with the strokes it shares
-    where only so it reads as `letter`."""
-    first = row.reading(alone)
-    if first.letter == letter:
+    where only so it reads as `letter` (read among all 26 only where it
+    reads so as `letter` alone)."""
+    first = row.reading(alone, exact=letter)
+    if first.letter == letter or row.reading(shared, letter).letter != letter:
         return first
-    second = row.reading(shared)
+    second = row.reading(shared, exact=letter)
     return second if second.letter == letter else first
 
 
