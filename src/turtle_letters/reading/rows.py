@@ -25,6 +25,7 @@ GAP = 0.1           # clear space between two letters' ink, share of the height 
 SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
 SHORT = 0.5         # a letter of a row less high than this share of the row is unfinished, no letter
 NEAR_TILTS = (-10, -5, 5, 10)   # degrees a part is tried off level when finding where to cut
+TIE = 0.01          # cuts whose fits differ by less fit as well
 
 
 class Row:
@@ -118,24 +119,42 @@ def cut(row, expected, ahead=True):
     end = row.x0 + row.width
     share, cuts, left = row.width / len(expected), [], row.x0 - 1e-9     # a part is (left, right]
     for k, letter in enumerate(expected[:-1]):
-        def fit(x):
-            before = row.fit(left, x, letter)
-            if not ahead:
-                return before
-            return max(before, row.fit(x, end + 1 if k == len(expected) - 2 else x + share,
-                                       expected[k + 1]))
+        def before(x):
+            return row.fit(left, x, letter)
+
+        def after(x):
+            return row.fit(x, end + 1 if k == len(expected) - 2 else x + share, expected[k + 1])
         # every tenth of a share, then the twentieths beside the best of those
         options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
-        options = [x for x in options if x < end] or [left + share]
-        fits = [(fit(x), x) for x in options]
+        fits = _scored([x for x in options if x < end] or [left + share], before,
+                       after if ahead else None)
         nearest = min(fits)[1]
-        fits += [(fit(x), x) for x in (nearest - share / 20, nearest + share / 20) if left < x < end]
+        fits += _scored([x for x in (nearest - share / 20, nearest + share / 20) if left < x < end],
+                        before, after if ahead else None)
         best = min(f for f, _ in fits)
-        # of the cuts that fit as well (to a hundredth), the one through the least ink
-        cuts.append(min((x for f, x in fits if f <= best + 0.01),
+        # of the cuts that fit as well, the one through the least ink (the leftmost of those)
+        cuts.append(min(sorted(x for f, x in fits if f <= best + TIE),
                         key=lambda x: sum(abs(p[0] - x) < share / 40 for line in row.fine for p in line)))
         left = cuts[-1]
     return cuts
+
+
+def _scored(options, before, after=None):
+    """(fit, x) of each cut of `options` that may fit within TIE of the
+    best: the worse of the fits of the parts `before` and `after` it. The
+    part after is read in the order of the part before's fit, and not
+    once that is worse than the best so far by TIE: a cut fits no better
+    than the part before it."""
+    firsts = sorted((before(x), x) for x in options)
+    if after is None:
+        return firsts
+    scored, best = [], math.inf
+    for fit, x in firsts:
+        if fit > best + TIE:
+            break
+        scored.append((max(fit, after(x)), x))
+        best = min(best, scored[-1][0])
+    return scored
 
 
 def letters_of(ink, expected, ahead=True):
