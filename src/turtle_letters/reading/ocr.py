@@ -17,7 +17,7 @@ from typing import NamedTuple
 
 from .ink import box, closed, thinned, turned
 from .forms import READABLE
-from .rows import letters_of, row_tilts
+from .rows import letters_of, levels, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
 PAD_PX = 16
@@ -114,13 +114,12 @@ def read_text(ink, expected='') -> OcrReading:
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return OcrReading('', 0.0)
-    x, y, w, h = box(points)
-    ink = thinned(ink, h / 200)
-    for slope in row_tilts(ink) if len(expected) > 1 else []:
-        upright = turned(ink, -slope, (x + w / 2, y + h / 2)) if slope else ink
+    for slope, _, upright in levels(without_specks(ink)) if len(expected) > 1 else []:
         alone = _letter_by_letter(upright, expected)._replace(tilt=float(slope))
         if supports(alone, expected):
             return alone
+    x, y, w, h = box(points)
+    ink = thinned(ink, h / 200)
     level = None
     for tilt in TILTS:
         upright = turned(ink, -tilt, (x + w / 2, y + h / 2)) if tilt else ink

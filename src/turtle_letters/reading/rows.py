@@ -11,6 +11,7 @@ in place than the best so far: each part is first read as its expected
 letter alone, which is cheap, and a part that does not read so cannot
 read so among all 26.
 """
+import functools
 import itertools
 import math
 import string
@@ -165,8 +166,27 @@ def letters_of(ink, expected, ahead=True):
     groups = apart(ink)
     if len(expected) < 2 or len(groups) >= len(expected):
         return [(group, group) for group in groups]
-    row = Row([line for group in groups for line in group])
+    row = row_of(ink)
     return row.letters(cut(row, expected, ahead))
+
+
+def row_of(ink):
+    """The Row of `ink`: the same one for the same ink, so that OCR, which
+    reads the letters the strokes' reader cut, finds the cuts worked out."""
+    return _row(tuple(tuple(tuple(p) for p in line) for line in ink))
+
+
+@functools.lru_cache(maxsize=8)
+def _row(lines):
+    return Row([list(line) for line in lines])
+
+
+def levels(ink):
+    """(tilt, centre, the ink turned back by it) for each of row_tilts:
+    the row as it lies level, the likelier first."""
+    x, y, w, h = box([p for line in ink for p in line])
+    centre = (x + w / 2, y + h / 2)
+    return [(tilt, centre, turned(ink, -tilt, centre) if tilt else ink) for tilt in row_tilts(ink)]
 
 
 def row_tilts(ink):
@@ -200,12 +220,10 @@ def read_row(ink, expected='') -> List[Reading]:
     if not isinstance(expected, str):
         row = Row(ink)
         return [row.reading(group) for group in apart(ink)]
-    x, y, w, h = box([p for line in ink for p in line])
-    centre, best = (x + w / 2, y + h / 2), None
-    for tilt in row_tilts(ink):
-        level = turned(ink, -tilt, centre) if tilt else ink
+    best = None
+    for tilt, centre, level in levels(ink):
         floor = -1 if best is None else _score(best, expected)[0]
-        readings = _read_letters(Row(level), expected, floor)
+        readings = _read_letters(row_of(level), expected, floor)
         if readings is not None:
             readings = [_turned_back(r, tilt, centre) for r in readings]
             if best is None or _score(readings, expected) > _score(best, expected):
