@@ -39,6 +39,7 @@ class Row:
         self.height = box([p for line in ink for p in line])[3]
         self.fine = [samples([line], SAMPLE * self.height / 2) for line in ink if line]
         self.x0, _, self.width, _ = box([p for line in self.fine for p in line])
+        self._across = [numpy.array([p[0] for p in line]) for line in self.fine]
         self._fits, self._readings = {}, {}
 
     def fit(self, left, right, letter):
@@ -46,16 +47,32 @@ class Row:
         strays from `letter`, at best, near level; inf with no ink there."""
         key = (left, right, letter)
         if key not in self._fits:
-            part = columns(self.fine, [left, right])[1]
+            part = self.between(left, right)
             reading = read(part, letter, NEAR_TILTS, ()) if part else None
             self._fits[key] = reading.best.fit if reading and reading.best else math.inf
         return self._fits[key]
 
     def letters(self, cuts):
-        """Each letter between `cuts`, as (its ink alone, its ink reaching
-        SAMPLE of the height past its cuts: a stroke two touching letters
-        share, an M's last leg as an F's stem, is each letter's)."""
-        return list(zip(columns(self.fine, cuts), columns(self.fine, cuts, SAMPLE * self.height)))
+        """Each letter between `cuts` (ascending x), as (its ink alone, its
+        ink reaching SAMPLE of the height past its cuts: a stroke two
+        touching letters share, an M's last leg as an F's stem, is each
+        letter's)."""
+        edges = list(zip([-math.inf] + list(cuts), list(cuts) + [math.inf]))
+        reach = SAMPLE * self.height
+        return [(self.between(lo, hi), self.between(lo - reach, hi + reach)) for lo, hi in edges]
+
+    def between(self, lo, hi):
+        """The ink between x `lo` (not included) and `hi`: each line's runs of points there."""
+        parts = []
+        for line, xs in zip(self.fine, self._across):
+            inside = numpy.r_[False, (xs > lo) & (xs <= hi), False]
+            edges = numpy.flatnonzero(inside[1:] != inside[:-1])
+            parts += [line[start:stop] for start, stop in zip(edges[::2], edges[1::2])]
+        return parts
+
+    def ink_near(self, x, within):
+        """How many of the fine points lie within `within` of x across."""
+        return sum(int(numpy.count_nonzero(numpy.abs(xs - x) < within)) for xs in self._across)
 
     def reading(self, part, letters=string.ascii_uppercase, exact=''):
         """The reading of `part`, a letter of this row, as one of `letters`
@@ -88,28 +105,6 @@ def apart(ink):
     return [group for group, _ in groups]
 
 
-def columns(ink, cuts, overlap=0.0):
-    """The ink split at the x of each of `cuts` (ascending): each line's
-    parts between two cuts, as the letters between them; a part reaches
-    `overlap` past its cuts."""
-    bounds = list(zip([-math.inf] + list(cuts), list(cuts) + [math.inf]))
-    letters = []
-    for lo, hi in bounds:
-        parts = []
-        for line in ink:
-            run = []
-            for p in line:
-                if lo - overlap < p[0] <= hi + overlap:
-                    run.append(p)
-                elif run:
-                    parts.append(run)
-                    run = []
-            if run:
-                parts.append(run)
-        letters.append(parts)
-    return letters
-
-
 def cut(row, expected, ahead=True):
     """Where to cut `row` (a Row) into the letters of `expected` side by
     side, its letters touching (a Z's foot run on into an A's leg): each
@@ -135,7 +130,7 @@ def cut(row, expected, ahead=True):
         best = min(f for f, _ in fits)
         # of the cuts that fit as well, the one through the least ink (the leftmost of those)
         cuts.append(min(sorted(x for f, x in fits if f <= best + TIE),
-                        key=lambda x: sum(abs(p[0] - x) < share / 40 for line in row.fine for p in line)))
+                        key=lambda x: row.ink_near(x, share / 40)))
         left = cuts[-1]
     return cuts
 
