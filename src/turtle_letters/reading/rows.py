@@ -25,7 +25,7 @@ from .recognition import MOST_TILT, SAMPLE, Reading, read
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
 SHORT = 0.5         # a letter of a row less high than this share of the row is unfinished, no letter
-NEAR_TILTS = (-10, -5, 5, 10)   # degrees a part is tried off level when finding where to cut
+NEAR_TILTS = (-5, 5)    # degrees a part is tried off level when finding where to cut
 TIE = 0.01          # cuts whose fits differ by less fit as well
 
 
