@@ -168,18 +168,18 @@ def _limit(exact):
     return best[-1] if len(best) == REFINED else math.inf
 
 
-def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER, exact='') -> Reading:
+def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Reading:
     """The letter of `letters` that `ink` (lines of (x, y), m) draws, best
     fit first; ink that fits no letter well level is tried turned back by
     each of TILTS, then by `finer` steps around the tilts that fit best
     (a wide letter 5 degrees off strays a tenth of its height); its fits
     keep the tilt (their strokes turned with it). The best fit is exact;
-    another letter's is no better than it (_fits), but exact for those
-    of `exact` (the letters expected: OCR may credit them)."""
+    another letter's is no better than it (_fits): read it alone for its
+    own (rows.Row.reading does, for the letter expected)."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
-    given, ink = ink, outline(ink) or ink       # an outline is read by its middle line
+    ink = outline(ink) or ink       # an outline is read by its middle line
     points = [p for line in ink for p in line]
     ink = thinned(ink, SAMPLE * box(points)[3] / 2)
     fits = _fits(ink, letters)
@@ -198,9 +198,6 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER, exact=''
             _tried(ink, letters, fits, more, centre)
     placed_fits = {letter: _placed(letter, f, centre) for letter, f in fits.items()}
     best = min(placed_fits.values(), key=lambda f: f.fit, default=None)
-    for other in set(exact) - {best and best.letter}:
-        alone = read(given, other, tilts, finer).best
-        placed_fits.update({other: alone} if alone else {})
     letter = best.letter if best is not None and best.fit <= best.readable else None
     return Reading(letter, best, placed_fits)
 

@@ -36,11 +36,17 @@ class Row:
 
     def __init__(self, ink):
         self.ink = ink
-        self.height = box([p for line in ink for p in line])[3]
-        self.fine = [samples([line], SAMPLE * self.height / 2) for line in ink if line]
-        self.x0, _, self.width, _ = box([p for line in self.fine for p in line])
-        self._across = [numpy.array([p[0] for p in line]) for line in self.fine]
+        self.x0, _, self.width, self.height = box([p for line in ink for p in line])
         self._fits, self._readings = {}, {}
+
+    @functools.cached_property
+    def fine(self):
+        """The ink with points at most SAMPLE / 2 of its height apart: where it is cut."""
+        return [samples([line], SAMPLE * self.height / 2) for line in self.ink if line]
+
+    @functools.cached_property
+    def _across(self):
+        return [numpy.array([p[0] for p in line]) for line in self.fine]
 
     def fit(self, left, right, letter):
         """How far the part between x `left` (not included) and `right`
@@ -75,15 +81,21 @@ class Row:
         return sum(int(numpy.count_nonzero(numpy.abs(xs - x) < within)) for xs in self._across)
 
     def reading(self, part, letters=string.ascii_uppercase, exact=''):
-        """The reading of `part`, a letter of this row, as one of `letters`
-        (read(), its fit to `exact` exact): none where it stands less than
-        SHORT of the row's height (its best fit kept, for the report)."""
+        """The reading of `part`, a letter of this row, as one of `letters`,
+        its fit to the letter `exact` exact (read() gives another letter's
+        than the best no better than the best's only; OCR may credit the
+        letter expected): none where it stands less than SHORT of the
+        row's height (its best fit kept, for the report)."""
         key = (tuple(tuple(tuple(p) for p in line) for line in part), letters, exact)
         if key not in self._readings:
-            reading = read(part, letters, exact=exact)
+            reading = read(part, letters)
+            fits = reading.fits
+            if exact and reading.letter != exact and self.reading(part, exact).best:
+                fits = {**fits, exact: self.reading(part, exact).best}
+            letter = reading.letter
             if part and box([p for line in part for p in line])[3] < SHORT * self.height:
-                reading = Reading(None, reading.best, reading.fits)
-            self._readings[key] = reading
+                letter = None
+            self._readings[key] = Reading(letter, reading.best, fits)
         return self._readings[key]
 
 
@@ -211,7 +223,7 @@ def read_row(ink, expected='') -> List[Reading]:
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
     if count <= 1:
-        return [read(ink, exact=expected if isinstance(expected, str) else '')]
+        return [Row(ink).reading(ink, exact=expected if isinstance(expected, str) else '')]
     if not isinstance(expected, str):
         row = Row(ink)
         return [row.reading(group) for group in apart(ink)]

@@ -101,6 +101,18 @@ def test_a_row_of_letters_is_read_left_to_right_by_the_space_between_them():
     assert len(read_row(ink, 1)) == 1             # one letter expected: the ink read whole
 
 
+def test_the_fit_to_a_letter_expected_is_exact_where_another_is_read():
+    """OCR may credit the letter expected where the strokes read another:
+    its fit is then its accuracy, and must be its own, not a bound."""
+    j = [(1.6, 3.0), (1.6, 1.0), (1.0, 1.0), (1.0, 1.6)]
+    d = [(2.0, 1.0), (2.0, 3.0), (2.5, 3.0), (2.9, 2.6), (2.9, 1.4), (2.5, 1.0), (2.0, 1.0)]
+    for ink, expected, drawn in (([d], 'B', 'D'), ([j, d], 'JO', 'JD')):
+        readings = read_row(ink, expected)
+        assert ''.join(r.letter for r in readings) == drawn
+        for group, reading, letter in zip(apart(ink), readings, expected):
+            assert reading.fits[letter].fit == read(group, letter).best.fit
+
+
 @pytest.mark.parametrize('tilt', [-15, -8, 12])
 def test_a_letter_drawn_up_to_15_degrees_off_level_still_reads(tilt):
     for letter in 'FKN':
