@@ -108,13 +108,17 @@ def _read_picture(ink, expected):
 def read_text(ink, expected='') -> OcrReading:
     """What Tesseract reads in `ink`, as a row of `expected`'s length: the
     expected text if its letters read alone (level, or turned back by the
-    row's slope) or the whole at any tilt read it at CONFIDENT or more
+    row's slope; not where the row read whole is plainly another text)
+    or the whole at any tilt read it at CONFIDENT or more
     (CONFIDENT_TURNED turned), else the most confident reading of the ink
     as it lies."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return OcrReading('', 0.0)
-    for slope, _, upright in levels(without_specks(ink)) if len(expected) > 1 else []:
+    rows = levels(without_specks(ink)) if len(expected) > 1 else []
+    if rows and _plainly_other(rows, expected):
+        rows = []       # not read letter by letter
+    for slope, _, upright in rows:
         alone = _letter_by_letter(upright, expected)._replace(tilt=float(slope))
         if supports(alone, expected):
             return alone
@@ -132,6 +136,15 @@ def read_text(ink, expected='') -> OcrReading:
             if confidence >= CONFIDENT:     # it reads as another text as it lies: that is it
                 return level
     return level
+
+
+def _plainly_other(rows, expected):
+    """Whether the row (rows.levels), read whole at its slope, is plainly
+    another text: a person sees that text, however the ink is cut. (The
+    cuts seek the expected letters: a CH cut where its H's stem ends the
+    C read letter by letter as QY, 87 and 83% sure; whole, it read CH 94%.)"""
+    text, confidence = _read_picture(rows[0][2], expected)
+    return text != expected and confidence >= CONFIDENT
 
 
 def _letter_by_letter(ink, expected):
