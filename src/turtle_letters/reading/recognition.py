@@ -103,17 +103,21 @@ class Fitting:
         return self.ink.grid[rows, self.ink.cols(xs)]
 
     def bounds(self):
-        """Each candidate's farthest point from the ink, of its sparse ones: its fit is no less."""
+        """Each candidate's farthest point from the ink, of its sparse ones: below its bound."""
         return numpy.maximum.reduceat(self._on_ink(self.choice.sparse),
                                       self.choice.sparse_starts[:-1])
 
-    def fit(self, i):
-        """Candidate i's fit: how far it strays from the ink, or the ink from it, the worse."""
-        part = numpy.arange(self.choice.starts[i], self.choice.starts[i + 1])
+    def bound(self, i):
+        """Candidate i's farthest point from the ink, of all its points: its fit is no less."""
+        return float(self._on_ink(numpy.arange(self.choice.starts[i], self.choice.starts[i + 1])).max())
+
+    def fit(self, i, bound):
+        """Candidate i's fit: the worse of its bound and how far the ink strays from it."""
+        part = slice(self.choice.starts[i], self.choice.starts[i + 1])
         xs = self.left[i] + self.choice.xs[part] * self.across[i]
         shape = Distances(xs, self.choice.ys[part], self.lo, self.hi)
-        return max(float(self._on_ink(part).max()),
-                   float(shape.grid[shape.rows(self.drawn[:, 1]), shape.cols(self.drawn[:, 0])].max()))
+        return max(bound, float(shape.grid[shape.rows(self.drawn[:, 1]),
+                                           shape.cols(self.drawn[:, 0])].max()))
 
 
 class _Found(NamedTuple):
@@ -131,7 +135,10 @@ def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
     candidate is fitted exactly only where its bound is under HOPELESS
     and below the REFINED-th best letter's fit so far, here and in `beat`
     (the ink at other tilts); a letter none of whose candidates was has
-    its least bound, marked so."""
+    its least bound, marked so. (A bound taken on every SPARSE-th point
+    only skips candidates; a bound kept is taken on all: a row's cuts
+    compare the bounds of parts that fit no letter, and the sparse ones
+    moved a real MF's cut off its M.)"""
     points = [p for line in ink for p in line]
     x, y, w, h = box(points)
     if w > WIDEST * h:
@@ -143,18 +150,19 @@ def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
     fits: Dict[str, _Found] = {}
     exact = {c: f.fit for c, f in (beat or {}).items() if f.exact}
     limit = _limit(exact)
-    for i in numpy.argsort(bounds):
+    for i in numpy.argsort(bounds):     # sparse bounds: each no more than its bound
         letter = candidates[fitting.chosen[i]][0]
         best = fits[letter].fit if letter in fits else math.inf
-        if bounds[i] >= best:
+        if bounds[i] >= best or (letter in fits and fits[letter].exact and bounds[i] >= limit):
             continue
-        if bounds[i] < limit and bounds[i] <= HOPELESS:
-            found = _Found(fitting.fit(i), int(fitting.chosen[i]), (x, y, w, h))
+        bound = fitting.bound(i)
+        if bound < limit and bound <= HOPELESS and bound < best:
+            found = _Found(fitting.fit(i, bound), int(fitting.chosen[i]), (x, y, w, h))
             if found.fit < exact.get(letter, math.inf):
                 exact[letter] = found.fit
                 limit = _limit(exact)
-        elif letter not in fits:
-            found = _Found(float(bounds[i]), int(fitting.chosen[i]), (x, y, w, h), exact=False)
+        elif letter not in fits or not fits[letter].exact:
+            found = _Found(bound, int(fitting.chosen[i]), (x, y, w, h), exact=False)
         else:
             continue
         if found.fit < best:
