@@ -90,8 +90,9 @@ class Row:
         if key not in self._readings:
             reading = read(part, letters)
             fits = reading.fits
-            if exact and reading.letter != exact and self.reading(part, exact).best:
-                fits = {**fits, exact: self.reading(part, exact).best}
+            alone = self.reading(part, exact).best if exact and reading.letter != exact else None
+            if alone:
+                fits = {**fits, exact: alone}
             letter = reading.letter
             if part and box([p for line in part for p in line])[3] < SHORT * self.height:
                 letter = None
@@ -271,7 +272,7 @@ def _read_letters(row, expected, floor=-1):
     groups = apart(row.ink)
     if len(groups) >= len(expected):
         return [row.reading(group, exact=letter)
-                for group, letter in itertools.zip_longest(groups, expected[:len(groups)], fillvalue='')]
+                for group, letter in itertools.zip_longest(groups, expected, fillvalue='')]
     best = None
     for ahead in (True, False):
         letters = row.letters(cut(row, expected, ahead))
