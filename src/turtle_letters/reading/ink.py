@@ -77,6 +77,21 @@ def turned(lines, degrees, centre):
             for line in lines]
 
 
+def squarest_turn(ink):
+    """Degrees, within 45 of level in steps of 2.5, that `ink` turned back
+    by leaves its box least in area: a letter's stems and bars lie along
+    the sides of its box (a wide H 20 degrees off is read 5 off at best
+    in 15-degree steps, and to OCR it is then no H)."""
+    points = numpy.array([p for line in ink for p in line], dtype=float)
+    if len(points) < 3:
+        return 0.0
+    angles = numpy.radians(numpy.arange(-45, 47.5, 2.5))
+    c, s = numpy.cos(angles)[:, None], numpy.sin(angles)[:, None]
+    xs, ys = points[:, 0] * c + points[:, 1] * s, points[:, 1] * c - points[:, 0] * s
+    least = int(numpy.argmin(numpy.ptp(xs, 1) * numpy.ptp(ys, 1)))
+    return round(float(numpy.degrees(angles[least])), 1)
+
+
 def closed(line, height):
     """Whether a line of ink comes back where it began: a contour."""
     return len(line) > 3 and math.dist(line[0], line[-1]) <= CLOSED * height

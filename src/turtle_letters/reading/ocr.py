@@ -6,16 +6,19 @@ person does, and no template decides what it sees. No ROS here.
 
 The expected text is the hypothesis to verify: the ink is read level and,
 unless it reads confidently as another text as it lies, turned back by
-each of TILTS; a reading of the expected text at CONFIDENT or more is
-kept, else the reading level. (Turned, a J read as an S at 86%: what
-reads as something else level is not turned until it reads as hoped.)
+each of TILTS and by the turn that stands it squarest, then narrowed (a
+letter drawn twice as wide is no print letter to Tesseract); a reading
+of the expected text at CONFIDENT or more (CONFIDENT_TURNED turned or
+narrowed) is kept, else the reading level. (Turned, a J read as an S at
+86%: what reads as something else level is not turned until it reads as
+hoped.)
 """
 import os
 import string
 import threading
 from typing import NamedTuple
 
-from .ink import box, closed, thinned, turned
+from .ink import box, closed, squarest_turn, thinned, turned
 from .forms import READABLE
 from .rows import letters_of, levels, without_specks
 
@@ -25,6 +28,8 @@ CONFIDENT = 80          # Tesseract's confidence (0-100) from which a reading is
 CONFIDENT_TURNED = 90   # ... turned back: each turn is one more chance to see what is hoped
 CLEAN = READABLE / 2    # a strokes' fit this close reads its letter beyond doubt
 TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by to be read
+NEAR = 2.5          # degrees off within which a turn is as good as another
+NARROWER = (0.7, 0.5)   # shares of its width the ink is read at last: a letter drawn wide
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
 _apis = threading.local()       # Tesseract's handles are not shared between threads
 # Tesseract's OpenMP would take every core while it reads: the grader reads
@@ -36,6 +41,7 @@ class OcrReading(NamedTuple):
     text: str               # A-Z, '' when nothing reads
     confidence: float       # 0-100
     tilt: float = 0.0       # degrees the ink lies off level
+    width: float = 1.0      # share of its width the ink was read at
 
 
 def picture(ink, filled=False):
@@ -81,10 +87,10 @@ def _api(mode):
     return api
 
 
-def _read_picture(ink, expected):
+def _read_picture(ink, expected, needed=CONFIDENT):
     """(text, confidence) of the picture of `ink`, read as a word, then as
     a line of letters or one letter, then (ink with contours) filled, the
-    same two ways: the first reading of `expected` at CONFIDENT or more,
+    same two ways: the first reading of `expected` at `needed` or more,
     else the word's reading. (Each reads some drawings the others miss: a real
     class's ZA, the Z's foot run into the A, read as a word gave ZA at 93%,
     as a line A, as a letter LZ; DejaVu's outlines read 6 and 9 of 26 as
@@ -99,7 +105,7 @@ def _read_picture(ink, expected):
         api.SetImage(image)
         text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
         reading = (text, float(api.MeanTextConf()) if text else 0.0)
-        if text == expected and reading[1] >= CONFIDENT:
+        if text == expected and reading[1] >= needed:
             return reading
         first = first or reading
     return first
@@ -110,7 +116,7 @@ def read_text(ink, expected='') -> OcrReading:
     expected text if its letters read alone (level, or turned back by the
     row's slope; not where the row read whole is plainly another text)
     or the whole at any tilt read it at CONFIDENT or more
-    (CONFIDENT_TURNED turned), else the most confident reading of the ink
+    (CONFIDENT_TURNED turned or narrowed), else the most confident reading of the ink
     as it lies."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
@@ -119,23 +125,42 @@ def read_text(ink, expected='') -> OcrReading:
     if rows and _plainly_other(rows, expected):
         rows = []       # not read letter by letter
     for slope, _, upright in rows:
-        alone = _letter_by_letter(upright, expected)._replace(tilt=float(slope))
+        alone = _letter_by_letter(upright, expected, _needed(slope))._replace(tilt=float(slope))
         if supports(alone, expected):
             return alone
     x, y, w, h = box(points)
     ink = thinned(ink, h / 200)
     level = None
-    for tilt in TILTS:
+    for tilt, width in _views(ink):
         upright = turned(ink, -tilt, (x + w / 2, y + h / 2)) if tilt else ink
-        text, confidence = _read_picture(upright, expected)
-        if expected and text == expected and confidence >= (CONFIDENT_TURNED if tilt else
-                                                            CONFIDENT):
-            return OcrReading(text, confidence, float(tilt))
-        if tilt == 0:
+        if width != 1.0:
+            upright = [[(px * width, py) for px, py in line] for line in upright]
+        text, confidence = _read_picture(upright, expected, _needed(tilt, width))
+        if expected and text == expected and confidence >= _needed(tilt, width):
+            return OcrReading(text, confidence, float(tilt), width)
+        if level is None:
             level = OcrReading(text, confidence)
             if confidence >= CONFIDENT:     # it reads as another text as it lies: that is it
                 return level
     return level
+
+
+def _views(ink):
+    """(degrees turned back by, share of its width) the ink is read at, in
+    turn: level, its squarest turn (ink.squarest_turn) where not within NEAR
+    of one of TILTS, each of TILTS, then squarest and NARROWER."""
+    square = squarest_turn(ink)
+    tilts = TILTS
+    if all(abs(square - tilt) > NEAR for tilt in TILTS):
+        tilts = TILTS[:1] + (square,) + TILTS[1:]
+    return [(tilt, 1.0) for tilt in tilts] + [(square, width) for width in NARROWER]
+
+
+def _needed(tilt, width=1.0):
+    """The confidence a reading of the expected text needs, read turned
+    back by `tilt` and at `width` of its width: each view but the ink as
+    it lies is one more chance to see what is hoped."""
+    return CONFIDENT_TURNED if tilt or width != 1.0 else CONFIDENT
 
 
 def _plainly_other(rows, expected):
@@ -147,7 +172,7 @@ def _plainly_other(rows, expected):
     return text != expected and confidence >= CONFIDENT
 
 
-def _letter_by_letter(ink, expected):
+def _letter_by_letter(ink, expected, needed):
     """Each letter the strokes' reader sets apart or cuts (level) read
     alone: letters whose ink touches read as one line may be read alone.
     The least sure letter's confidence is the row's."""
@@ -155,9 +180,9 @@ def _letter_by_letter(ink, expected):
         return OcrReading('', 0.0)
     read = []
     for letter, (alone, shared) in zip(expected, letters_of(ink, expected)):
-        text, confidence = _read_picture(alone, letter) if alone else ('', 0.0)
-        if text != letter and shared:
-            text, confidence = max([(text, confidence), _read_picture(shared, letter)],
+        text, confidence = _read_picture(alone, letter, needed) if alone else ('', 0.0)
+        if (text != letter or confidence < needed) and shared:
+            text, confidence = max([(text, confidence), _read_picture(shared, letter, needed)],
                                    key=lambda r: (r[0] == letter, r[1]))
         read.append((text, confidence))
     if not read:
@@ -173,7 +198,7 @@ def supports(reading: OcrReading, expected: str, strokes=()) -> bool:
     read it a Z; a round O with no tail is a Q to OCR 90% sure, the
     strokes read it an O within 2% of its height.)"""
     if not (expected and reading.text == expected and
-            reading.confidence >= (CONFIDENT_TURNED if reading.tilt else CONFIDENT)):
+            reading.confidence >= _needed(reading.tilt, reading.width)):
         return False
     return not any(r.letter not in (None, e) and r.best.fit <= CLEAN
                    for r, e in zip(strokes, expected))
@@ -183,5 +208,6 @@ def said(reading: OcrReading) -> str:
     if not reading.text:
         return 'OCR reads no letter'
     tilted = f', {abs(reading.tilt):g} degrees off level' if reading.tilt else ''
-    return f'OCR reads {reading.text} ({reading.confidence:.0f}% sure{tilted})'
+    narrowed = f', read at {reading.width:.0%} of its width' if reading.width != 1.0 else ''
+    return f'OCR reads {reading.text} ({reading.confidence:.0f}% sure{tilted}{narrowed})'
 

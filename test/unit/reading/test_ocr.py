@@ -102,3 +102,32 @@ def walked(line, step):
         points += [(a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n)
                    for i in range(1, n + 1)]
     return points
+
+
+@pytest.mark.parametrize('letter, aspect, tilt', [('H', 1.95, 19.6), ('D', 1.59, -20.0)])
+def test_a_wide_block_letter_between_ocrs_turns_is_read_turned_back_square(letter, aspect, tilt):
+    """DejaVu Sans Bold's outline, stretched wide and turned off any of
+    OCR's 15-degree steps: turned back by the turn that leaves its box
+    least (its stems upright), it reads as the letter it is, 90% sure or
+    more. (Turned back by the nearest step, 5 degrees off, neither read.)"""
+    from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
+    glyph = outline_glyphs(DEJAVU_BOLD[0])[letter]
+    ink = turned([[(4 * aspect * x, 4 * y) for x, y in line] for line in glyph], tilt, (0.0, 0.0))
+    reading = read_text(ink, letter)
+    assert supports(reading, letter) and abs(reading.tilt - tilt) <= 5, reading
+
+
+@pytest.mark.parametrize('font, letter, aspect, tilt', [(0, 'H', 2.0, 14), (0, 'F', 1.93, -24.7),
+                                                        (1, 'M', 1.8, 4)])
+def test_a_block_letter_drawn_twice_as_wide_is_read_narrowed(font, letter, aspect, tilt):
+    """A DejaVu Bold outline stretched to about twice its width: no print
+    letter, and Tesseract reads none of these at its own width, at any
+    turn. Read at a half or 0.7 of its width, squarest, it is the letter
+    a person sees; graded as another letter, nothing is credited."""
+    from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
+    glyph = outline_glyphs(DEJAVU_BOLD[font])[letter]
+    ink = turned([[(4 * aspect * x, 4 * y) for x, y in line] for line in glyph], tilt, (0.0, 0.0))
+    reading = read_text(ink, letter)
+    assert supports(reading, letter) and reading.width < 1, reading
+    for other in 'NOEVW'.replace(letter, ''):
+        assert not supports(read_text(ink, other), other), other
