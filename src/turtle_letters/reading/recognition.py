@@ -1,10 +1,12 @@
 """Which letter of A-Z a path draws, at any size, place and aspect. No ROS.
 
 Each candidate (each form of a letter, forms.py) is stretched onto the
-path's box, its height and width each on its own, and the two are compared both ways: how far the path strays from
-the candidate's strokes, and how far the strokes are from anything drawn.
+path's box, its height and width each on its own, and the two are
+compared both ways: how far the path strays from the candidate's strokes, and how far the strokes are from anything drawn.
 The worse of the two, as a share of the letter's height, is the fit; the
-best-fitting candidate is the letter, if its fit is at most READABLE.
+best-fitting candidate is the letter, if its fit is at most READABLE and
+no other letter's is within AMBIGUOUS of it (a block J's middle line fit
+an I 0.05 of its height off, and a J 0.051: that ink says neither).
 What is read is ink: the unbroken lines a turtle drew with its pen down,
 as many as there are. Travel with the pen up is no part of it; a cadet who
 retraces strokes to reach the next one loses nothing either, since
@@ -27,6 +29,7 @@ REFINED = 3         # the best-fitting letters whose tilts are tried finer
 MOST_TILT = max(TILTS) + sum(FINER)     # degrees off level a letter is read at, at most
 SAMPLE = 0.02       # share of the height between compared points
 HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
+AMBIGUOUS = 0.005   # another letter fitting within this of the best: the two cannot be told apart
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
 
 
@@ -207,6 +210,8 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Readi
     placed_fits = {letter: _placed(letter, f, centre) for letter, f in fits.items()}
     best = min(placed_fits.values(), key=lambda f: f.fit, default=None)
     letter = best.letter if best is not None and best.fit <= best.readable else None
+    if letter and any(f.fit < best.fit + AMBIGUOUS for f in placed_fits.values() if f is not best):
+        letter = None       # the second-best letter's fit is exact (REFINED >= 2)
     return Reading(letter, best, placed_fits)
 
 
