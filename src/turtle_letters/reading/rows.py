@@ -121,10 +121,11 @@ def apart(ink):
 def cut(row, expected, ahead=True):
     """Where to cut `row` (a Row) into the letters of `expected` side by
     side, its letters touching (a Z's foot run on into an A's leg): each
-    cut, left to right, between 0.4 and 1.6 of an even share of the row,
-    where the part before it fits its expected letter best and, `ahead`,
-    the part after it fits the next letter too (the last cut: the rest
-    as the last letter; an earlier one: the next even share)."""
+    cut, left to right, between 0.1 and 1.9 of an even share of the row
+    (an I is a bare stroke; a W is as wide as two narrow letters), where
+    the part before it fits its expected letter best and, `ahead`, the
+    part after it fits the next letter too (the last cut: the rest as the
+    last letter; an earlier one: the next even share)."""
     end = row.x0 + row.width
     share, cuts, left = row.width / len(expected), [], row.x0 - 1e-9     # a part is (left, right]
     for k, letter in enumerate(expected[:-1]):
@@ -134,7 +135,7 @@ def cut(row, expected, ahead=True):
         def after(x):
             return row.fit(x, end + 1 if k == len(expected) - 2 else x + share, expected[k + 1])
         # every tenth of a share, then the twentieths beside the best of those
-        options = [left + share * (0.4 + 0.1 * i) for i in range(13)]
+        options = [left + share * (0.1 + 0.1 * i) for i in range(19)]
         fits = _scored([x for x in options if x < end] or [left + share], before,
                        after if ahead else None)
         nearest = min(fits)[1]

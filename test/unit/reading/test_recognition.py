@@ -13,7 +13,7 @@ from turtle_letters.reading.rows import apart, read_row
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import placed, retraced, rounded
-from support.glyph_rows import row
+from support.glyph_rows import row, touching
 
 SHAPES = [(3.0, 1.0, 5.5, 5.5), (0.5, 1.8, 1.0, 9.0), (2.0, 0.5, 8.0, 1.0)]
 
@@ -214,6 +214,17 @@ def test_a_row_of_touching_letters_tilted_reads_turned_back_by_its_slope(tilt):
     readings = read_row(ink, 'RH')
     assert [r.letter for r in readings] == ['R', 'H'], [r.best for r in readings]
     assert all(abs(r.best.tilt - tilt) <= 10 for r in readings)
+
+
+@pytest.mark.parametrize('family, text, aspect, tilt', [
+    ('rowmans', 'IQ', 1.0, 0), ('rowmans', 'IQ', 1.5, -21), ('rowmans', 'QI', 1.0, 0),
+    ('rowmans', 'IK', 1.0, 0), ('rowmand', 'IE', 1.0, 0), ('rowmand', 'IHP', 1.5, -21)])
+def test_a_bare_stroke_touching_its_neighbour_is_cut_off_it(family, text, aspect, tilt):
+    """An I is a bare stroke, a tenth of an even share of the row or less:
+    a row's cuts are tried from a tenth of a share to 1.9 of one (from 0.4
+    to 1.6, none of these was read)."""
+    ink = turned(touching(family, text, aspect), tilt, (0.0, 0.0))
+    assert ''.join(r.letter or '?' for r in read_row(ink, text)) == text
 
 
 def s_begun(left, top, radius=0.4):
