@@ -221,8 +221,8 @@ def test_a_row_of_touching_letters_tilted_reads_turned_back_by_its_slope(tilt):
     ('rowmans', 'IK', 1.0, 0), ('rowmand', 'IE', 1.0, 0), ('rowmand', 'IHP', 1.5, -21)])
 def test_a_bare_stroke_touching_its_neighbour_is_cut_off_it(family, text, aspect, tilt):
     """An I is a bare stroke, a tenth of an even share of the row or less:
-    a row's cuts are tried from a tenth of a share to 1.9 of one (from 0.4
-    to 1.6, none of these was read)."""
+    beside one, a row's cuts are tried from a tenth of a share to 1.9 of
+    one (from 0.4 to 1.6, none of these was read)."""
     ink = turned(touching(family, text, aspect), tilt, (0.0, 0.0))
     assert ''.join(r.letter or '?' for r in read_row(ink, text)) == text
 
