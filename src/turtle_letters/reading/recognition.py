@@ -2,7 +2,8 @@
 
 Each candidate (each form of a letter, forms.py) is stretched onto the
 path's box, its height and width each on its own, and the two are
-compared both ways: how far the path strays from the candidate's strokes, and how far the strokes are from anything drawn.
+compared both ways: how far the path strays from the candidate's
+strokes, and how far the strokes are from anything drawn.
 The worse of the two, as a share of the letter's height, is the fit; the
 best-fitting candidate is the letter, if its fit is at most READABLE and
 no other letter's is within AMBIGUOUS of it (a block J's middle line fit
