@@ -13,15 +13,15 @@ def row(text, gap=0.1, size=2.0, left=1.0, bottom=3.0):
     return ink
 
 
-def touching(family, text, aspect=1.0):
-    """`text` in a Hershey family, each letter's ink starting where the
-    last one's ends, all `aspect` times as wide, 1 high (as the recognition
-    benchmark draws its rows)."""
+def touching(family, text, aspect=1.0, gap=0.0):
+    """`text` in a Hershey family, each letter's ink starting `gap` after
+    where the last one's ends, all `aspect` times as wide (as the
+    recognition benchmark draws its rows)."""
     from turtle_letters.letters.hershey import load_font
     font, ink, x = load_font(family), [], 0.0
     for letter in text:
         strokes = font.glyph(letter).strokes
         left = min(px for s in strokes for px, _ in s)
         ink += [[((px - left + x) * aspect, py) for px, py in s] for s in strokes]
-        x += max(px for s in strokes for px, _ in s) - left
+        x += max(px for s in strokes for px, _ in s) - left + gap
     return ink
