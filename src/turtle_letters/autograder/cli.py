@@ -289,11 +289,13 @@ def write_class(out, rows, title):
 
 
 def with_ungraded(rows, students, stopped):
-    """`rows`, and for each student grading stopped before, a row that says so."""
-    graded = {row.id for row in rows}
-    return rows + [reports.not_graded(s.id, s.name, s.expected, f'grading was stopped '
-                                      f'({stopped}) before this student was graded')
-                   for s in students if s.id not in graded]
+    """A row for every student in roster order: `rows`, and for each student
+    grading stopped before, a row that says so. (With two jobs a later
+    student may finish before an earlier one that was stopped.)"""
+    graded = {row.id: row for row in rows}
+    return [graded.get(s.id) or reports.not_graded(
+        s.id, s.name, s.expected, f'grading was stopped ({stopped}) before this student was graded')
+        for s in students]
 
 
 EXIT = {'': 0, 'SIGINT': 130, 'SIGTERM': 143}

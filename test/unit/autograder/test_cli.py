@@ -93,3 +93,16 @@ def test_each_row_is_written_as_it_is_graded(tmp_path, monkeypatch):
     ann_and_bob(tmp_path)
     assert written == [['a1'], ['a1', 'b2']]
     assert (tmp_path / 'out' / 'grades.csv').read_text().count('\n') == 3
+
+
+def test_the_class_files_keep_roster_order_when_a_later_student_finished_first():
+    """Two at a time, the third student may finish before the second, who
+    is then stopped: the second's 'not graded' row stays in its place."""
+    students = [Student(sid, name, 'A', None) for sid, name in
+                (('a1', 'Ann'), ('b2', 'Bob'), ('c3', 'Cy'))]
+    done = [cli.reports.not_graded(sid, name, 'A', 'stands in for a graded row')
+            for sid, name in (('a1', 'Ann'), ('c3', 'Cy'))]
+    rows = cli.with_ungraded(done, students, 'SIGINT')
+    assert [r.id for r in rows] == ['a1', 'b2', 'c3']
+    assert rows[1].grade.reason == 'grading was stopped (SIGINT) before this student was graded'
+    assert rows[2] is done[1]
