@@ -8,8 +8,10 @@ and-move forms cadets draw (forms.VARIANTS); each at a random tilt
 (+-45 degrees), aspect (0.5 to 2), size (0.5 m to the canvas) and place,
 walked at a random speed in turtlesim's 16 ms steps; rows of 2 or 3 letters
 touching or nearly. Each drawing is graded against its own letters, and
-against another letter or row (a wrong letter credited is the figure that
-must stay 0). Figures for the strokes' reader, OCR, and the two combined
+against another letter or row: a wrong letter credited, the figure that
+must stay 0, is a drawing any letter of which is credited where another
+was drawn (the whole text, or one letter in its place: a row that does
+not read whole earns a share for each letter read in place). Figures for the strokes' reader, OCR, and the two combined
 as the grader combines them.
 """
 import argparse
@@ -74,15 +76,23 @@ def drawn(glyphs, text, rng):
 
 
 def readers(ink, expected):
-    """(strokes read it, OCR read it, seconds of each), both asked: the
-    figures of each alone. (The grader asks OCR only where the strokes do
-    not read the expected text: the two combined count its time only there.)"""
+    """(the letters the strokes read, '?' for none; whether OCR read the
+    text; seconds of each), both asked: the figures of each alone. (The
+    grader asks OCR only where the strokes do not read the expected text:
+    the two combined count its time only there.)"""
     started = time.monotonic()
     readings = read_row(ink, expected)
-    strokes = ''.join(r.letter or '?' for r in readings) == expected
+    strokes = ''.join(r.letter or '?' for r in readings)
     middle = time.monotonic()
     ocr = supports(read_text(ink, expected), expected, readings)
     return strokes, ocr, middle - started, time.monotonic() - middle
+
+
+def wrong_in_place(read, drawn, other):
+    """Whether a letter of `other` is credited in its place where `drawn`
+    has another: the grader credits each letter the strokes read in place
+    (the rest of a row that does not read whole earns its share)."""
+    return any(r == o != d for r, o, d in zip(read, other, drawn))
 
 
 _fonts = []     # each worker's corpus fonts, loaded once
@@ -104,8 +114,9 @@ def one_drawing(job):
     while other == text:
         other = ''.join(rng.choice(string.ascii_uppercase) for _ in text)
     ink = drawn(glyphs, text, rng)
-    s, o, s_time, o_time = readers(ink, text)
-    ws, wo, _, _ = readers(ink, other)
+    read, o, s_time, o_time = readers(ink, text)
+    read_other, wo, _, _ = readers(ink, other)
+    s, ws = read == text, wrong_in_place(read_other, text, other)
     return family, f'{text} as {other}', {
         'strokes': (s, ws, s_time), 'ocr': (o, wo, o_time),
         'both': (s or o, ws or wo, s_time + (0.0 if s else o_time))}

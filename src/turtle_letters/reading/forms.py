@@ -12,6 +12,7 @@ from .ink import CELL, box, outline, samples
 
 Point = Tuple[float, float]
 READABLE = 0.15     # worst deviation, share of the height, of a path still read as its letter
+CLEAN = READABLE / 2    # a fit this close reads its letter beyond doubt
 SPARSE = 3          # a candidate's bound is taken on every SPARSE-th of its points
 
 _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]

@@ -19,14 +19,13 @@ import threading
 from typing import NamedTuple
 
 from .ink import box, closed, squarest_turn, thinned, turned
-from .forms import READABLE
+from .forms import CLEAN
 from .rows import letters_of, levels, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
 PAD_PX = 16
 CONFIDENT = 80          # Tesseract's confidence (0-100) from which a reading is believed
 CONFIDENT_TURNED = 90   # ... turned back: each turn is one more chance to see what is hoped
-CLEAN = READABLE / 2    # a strokes' fit this close reads its letter beyond doubt
 TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by to be read
 NEAR = 2.5          # degrees off within which a turn is as good as another
 NARROWER = (0.7, 0.5)   # shares of its width the ink is read at last: a letter drawn wide
