@@ -283,9 +283,8 @@ def _read_letters(row, expected, floor=-1, back=lambda reading: reading):
     """The row's readings, each as `back` turns it back to lie as the ink
     does (the ways are compared so: a letter read level may lie past
     MOST_TILT once turned back, and is then no letter): its letters set
-    apart; or cut looking
-    ahead, and (a row that does not read so) cut letter by letter too, the
-    better kept; or, where as many of its letters read in place so, each
+    apart; or cut looking ahead, and (a row that does not read so) cut
+    letter by letter too, the better kept (_confirmed); or, where as many of its letters read in place so, each
     letter set apart read whole: a row unfinished (a U where USI was
     expected) is fewer letters. A way is read whole only where it may
     read more letters in place than `floor` and the best way so far
@@ -321,22 +320,25 @@ def _read_letters(row, expected, floor=-1, back=lambda reading: reading):
 def _confirmed(row, expected, readings, ahead):
     """`readings` of a row cut for `expected` that did not all read so,
     each letter read in place kept only where it reads CLEAN and the row
-    cut blind at its place (ANY letter there) reads it there too. A cut
-    sought for a letter that is not there finds ink that fits it: a
-    sliver of an O as an I, a gothic C's half as a B. (Rows 2000 to 2499
-    of the recognition benchmark, graded against other initials: 38 such
-    letters credited; kept so, 3.)"""
+    cut blind at its place reads it there too. A cut sought for a letter
+    that is not there finds ink that fits it: a sliver of an O as an I, a
+    gothic C's half as a B. (Rows 2000 to 2499 of the recognition
+    benchmark, graded against other initials: 38 such letters credited;
+    kept so, 5.)"""
     kept = []
     for k, (reading, letter) in enumerate(zip(readings, expected)):
-        if reading.letter == letter and reading.best.fit > CLEAN:
-            reading = Reading(None, reading.best, reading.fits)
-        elif reading.letter == letter:
-            blind = expected[:k] + ANY + expected[k + 1:]
-            alone, shared = row.letters(cut(row, blind, ahead))[k]
-            if _as_expected(row, letter, alone, shared).letter != letter:
-                reading = Reading(None, reading.best, reading.fits)
-        kept.append(reading)
+        doubted = reading.letter == letter and (
+            reading.best.fit > CLEAN or not _read_blind(row, expected, k, ahead))
+        kept.append(Reading(None, reading.best, reading.fits) if doubted else reading)
     return kept
+
+
+def _read_blind(row, expected, k, ahead):
+    """Whether letter k of `expected` reads in its place where the row is
+    cut with ANY letter there."""
+    blind = expected[:k] + ANY + expected[k + 1:]
+    alone, shared = row.letters(cut(row, blind, ahead))[k]
+    return _as_expected(row, expected[k], alone, shared).letter == expected[k]
 
 
 def _hoped(row, letters, expected):
