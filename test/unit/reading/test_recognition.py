@@ -289,3 +289,18 @@ def test_a_row_graded_against_other_initials_earns_no_letter_in_place(family, dr
     assert not any(r == o != d for r, o, d in zip(read, other, drawn)), read
     if family != 'scripts':
         assert ''.join(r.letter or '?' for r in read_row(ink, drawn)) == drawn
+
+
+@pytest.mark.parametrize('family, drawn, other, aspect, gap, tilt', [
+    ('rowmant', 'XUR', 'UMT', 1.55, 0.047, -37), ('scripts', 'GP', 'IE', 1.98, -0.029, 33),
+    ('gothiceng', 'DO', 'RS', 1.73, 0.001, 36)])
+def test_a_sloped_row_stood_on_its_end_is_no_letter_of_other_initials(family, drawn, other,
+                                                                       aspect, gap, tilt):
+    """A row of touching initials sloped 33 to 37 degrees, read level as one
+    ink, is a tall narrow letter 50 degrees the other way off level: the
+    whole XUR fit a U within 7% of its height. Graded against other
+    initials that begin with that letter, it once earned it in place. A
+    letter lying across its row's slope is none of the row's."""
+    ink = turned(touching(family, drawn, aspect, gap), tilt, (0.0, 0.0))
+    read = ''.join(r.letter or '?' for r in read_row(ink, other))
+    assert not any(r == o != d for r, o, d in zip(read, other, drawn)), read
