@@ -120,7 +120,7 @@ def read_text(ink, expected='') -> OcrReading:
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return OcrReading('', 0.0)
-    rows = levels(without_specks(ink)) if len(expected) > 1 else []
+    rows = levels(without_specks(ink), len(expected)) if len(expected) > 1 else []
     if rows and _plainly_other(rows, expected):
         rows = []       # not read letter by letter
     for slope, _, upright in rows:

@@ -31,6 +31,8 @@ TIE = 0.01          # cuts whose fits differ by less fit as well
 BARE = 0.2          # a form narrower than this share of its height is a bare stroke
 ANY = '?'           # in a text to cut a row into, a letter that may be any
 ACROSS = 75         # degrees off a row's slope past which a letter of it lies across the row
+SQUARE = 60         # degrees apart two turns of a row lie where it may stand either way up
+AS_LOW = 1.3        # a turn leaving a row this share as high as the lowest does: it may lie so
 
 
 class Row:
@@ -208,25 +210,52 @@ def _row(lines):
     return Row([list(line) for line in lines])
 
 
-def levels(ink):
-    """(tilt, centre, the ink turned back by it) for each of row_tilts:
-    the row as it lies level, the likelier first."""
+def levels(ink, count=2):
+    """(tilt, centre, the ink turned back by it) for the row's slope, then
+    level (0): the row as it lies level, the likelier first. Where the row
+    lies as low two ways (row_slopes), its slope is the lower one unless
+    the other reads more letters of any kind, `count` of them (_seen):
+    which way is up is not decided by the letters hoped for."""
     x, y, w, h = box([p for line in ink for p in line])
     centre = (x + w / 2, y + h / 2)
-    return [(tilt, centre, turned(ink, -tilt, centre) if tilt else ink) for tilt in row_tilts(ink)]
+
+    def level(tilt):
+        return turned(ink, -tilt, centre) if tilt else ink
+    slope, *rival = row_slopes(ink)
+    if rival and _seen(level(rival[0]), count) > _seen(level(slope), count):
+        slope = rival[0]
+    return [(tilt, centre, level(tilt)) for tilt in ([slope] if slope else []) + [0]]
 
 
-def row_tilts(ink):
-    """Degrees a row of letters may lie off level, the likelier first: the
-    turn within 50 degrees of level, in steps of 5, that leaves the row
-    least high (a row is level where its letters stand side by side), then 0."""
+def row_slopes(ink):
+    """Degrees a row of letters may lie off level: the turn within 50
+    degrees of level, in steps of 5, that leaves the row least high (a row
+    is level where its letters stand side by side); and another at least
+    SQUARE from it, where one leaves the row within AS_LOW as low (a row of
+    two narrow letters is as low stood on its end)."""
     points = numpy.array([p for line in ink for p in line])
     if len(points) < 3:
         return [0]
-    angles = numpy.radians(numpy.arange(-50, 55, 5))
-    heights = [numpy.ptp(points[:, 1] * math.cos(a) - points[:, 0] * math.sin(a)) for a in angles]
-    slope = int(round(math.degrees(angles[int(numpy.argmin(heights))])))
-    return ([slope] if slope else []) + [0]
+    turns = numpy.arange(-50, 55, 5)
+    angles = numpy.radians(turns)
+    heights = numpy.array([numpy.ptp(points[:, 1] * math.cos(a) - points[:, 0] * math.sin(a))
+                           for a in angles])
+    lowest = int(numpy.argmin(heights))
+    padded = numpy.r_[math.inf, heights, math.inf]
+    rivals = [i for i in numpy.argsort(heights) if padded[i] >= heights[i] <= padded[i + 2] and
+              abs(turns[i] - turns[lowest]) >= SQUARE and heights[i] <= AS_LOW * heights[lowest]]
+    return [int(turns[i]) for i in [lowest] + rivals[:1]]
+
+
+def _seen(ink, count):
+    """How many letters of any kind `ink`, as it lies, reads as a row of
+    `count`: its letters set apart, or cut letter by letter with ANY
+    letter at each place."""
+    row = row_of(ink)
+    groups = apart(row.ink)
+    parts = groups if len(groups) >= count else \
+        [alone for alone, _ in row.letters(cut(row, ANY * count, ahead=False))]
+    return sum(row.reading(part).letter is not None for part in parts)
 
 
 def read_row(ink, expected='') -> List[Reading]:
@@ -235,7 +264,7 @@ def read_row(ink, expected='') -> List[Reading]:
     where fewer are set apart than expected, the ink is cut into them, and
     a letter cut is its expected letter if it reads so alone or with the
     strokes it shares. A row that does not read so level is read turned
-    back by its slope (row_tilts). The cuts only find the letters; a
+    back by its slope (levels). The cuts only find the letters; a
     reading of all the letters says what each is. Specks are no part of
     it (without_specks), and a letter of a row less than SHORT of the
     row's height reads as no letter (unfinished: a quarter of an S's curve
@@ -247,7 +276,7 @@ def read_row(ink, expected='') -> List[Reading]:
     if not isinstance(expected, str):
         row = Row(ink)
         return [row.reading(group) for group in apart(ink)]
-    best, ways = None, levels(ink)
+    best, ways = None, levels(ink, len(expected))
     for tilt, centre, level in ways:
         floor = -1 if best is None else _score(best, expected)[0]
         back = functools.partial(_turned_back, tilt=tilt, centre=centre, slope=ways[0][0])
@@ -264,7 +293,7 @@ def _turned_back(reading, tilt, centre, slope=0):
     """A reading of ink turned back by `tilt`, as the ink lies: no letter
     where the two tilts add up to more than a letter is read at alone
     (MOST_TILT: a J lying on its side is no J), nor where it lies across
-    its row, more than ACROSS off the row's `slope` (row_tilts): a row of
+    its row, more than ACROSS off the row's `slope` (levels): a row of
     touching initials sloped 37 degrees, read level as one ink, fit a U
     standing 47 degrees the other way within 7% of its height."""
     def back(fit):

@@ -304,3 +304,20 @@ def test_a_sloped_row_stood_on_its_end_is_no_letter_of_other_initials(family, dr
     ink = turned(touching(family, drawn, aspect, gap), tilt, (0.0, 0.0))
     read = ''.join(r.letter or '?' for r in read_row(ink, other))
     assert not any(r == o != d for r, o, d in zip(read, other, drawn)), read
+
+
+@pytest.mark.parametrize('family, drawn, other, tilt', [
+    ('rowmans', 'KA', 'IA', 30), ('rowmans', 'RH', 'RN', 45), ('rowmand', 'MF', 'NE', -42),
+    ('rowmans', 'ZA', 'NA', 40), ('rowmand', 'LE', 'IF', -40)])
+def test_a_row_of_two_narrow_letters_tilted_reads_the_way_up_its_letters_stand(family, drawn,
+                                                                               other, tilt):
+    """Two touching letters 0.7 times as wide, tilted 30 to 45 degrees,
+    are as low stood on their end as at their slope, or up to a quarter
+    lower: the row was read at that turn only, where none of them read.
+    Of the two turns, the lower is the row's slope unless the row reads
+    more letters of any kind at the other; graded against other initials,
+    it earns none of them in place."""
+    ink = turned(touching(family, drawn, 0.7), tilt, (0.0, 0.0))
+    assert ''.join(r.letter or '?' for r in read_row(ink, drawn)) == drawn
+    read = ''.join(r.letter or '?' for r in read_row(ink, other))
+    assert not any(r == o != d for r, o, d in zip(read, other, drawn)), read
