@@ -26,6 +26,12 @@ from . import reports, rubric as rubrics, session, submission
 from .roster import Student
 
 
+# s within which a stop asked (Ctrl-C) is noted by the grader. Ctrl-C reaches its
+# process group: a helper in the instant before its own session (a mount making a
+# sandbox) dies of it, and its failure must not be taken for the student's.
+STOP_NOTED = 2.0
+
+
 class Stopped(Exception):
     """Grading was stopped (Ctrl-C, SIGTERM) before this student was done."""
 
@@ -66,7 +72,7 @@ def _facts_or_failure(student, rubric, place):
     except Stopped:
         raise
     except Exception as e:      # whatever the submission made the grader meet
-        if place.stopping.is_set():
+        if place.stopping.wait(STOP_NOTED):
             raise Stopped() from None
         return failed(student, e), None, [], traceback.format_exc()
 

@@ -5,6 +5,8 @@ one has its own row: test/class/test_odd_class.py), so the failure is
 stood in for: the RecursionError a tree 1,100 deep once raised."""
 import os
 import signal
+import subprocess
+import threading
 import time
 
 import pytest
@@ -46,6 +48,27 @@ def test_once_stopped_no_student_is_begun(tmp_path):
         driver.grade(Student('a1', 'Ann', 'A', None), rubrics.load(RUBRIC),
                           str(tmp_path / 'out'), place)
     assert not os.path.exists(tmp_path / 'out')
+
+
+def test_a_helper_that_died_of_the_ctrl_c_stopping_the_class_is_no_failure_of_the_student(
+        tmp_path, monkeypatch):
+    """Ctrl-C reaches the grader's process group: a mount it was starting for
+    a sandbox, not yet in a session of its own, died of it (as CI saw: s4
+    "fail: CalledProcessError ... mount ... died with SIGINT"). The grader
+    notes the stop a moment later; the student is not graded, not failed."""
+    def mount_died(folder):
+        raise subprocess.CalledProcessError(-signal.SIGINT, ['mount', '-t', 'tmpfs'])
+    monkeypatch.setattr(driver.submission, 'find', mount_died)
+    place = cli.Place([], isolated=False, jobs=1, caps=None)
+    noted = threading.Timer(0.3, place.stop)      # the main thread looks each 0.2 s
+    noted.start()
+    try:
+        with pytest.raises(driver.Stopped):
+            driver.grade(Student('a1', 'Ann', 'A', str(tmp_path)), rubrics.load(RUBRIC),
+                         str(tmp_path / 'out'), place)
+    finally:
+        noted.join()
+    assert not os.path.exists(tmp_path / 'out' / 'a1')
 
 
 def test_a_failure_even_in_writing_a_students_files_is_their_row_and_the_class_goes_on(
