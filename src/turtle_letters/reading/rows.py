@@ -33,6 +33,7 @@ ANY = '?'           # in a text to cut a row into, a letter that may be any
 ACROSS = 75         # degrees off a row's slope past which a letter of it lies across the row
 SQUARE = 60         # degrees apart two turns of a row lie where it may stand either way up
 AS_LOW = 1.3        # a turn leaving a row this share as high as the lowest does: it may lie so
+FAR_OFF = 30        # degrees off level past which, on a tie, neither way up of a row is taken
 
 
 class Row:
@@ -215,15 +216,22 @@ def levels(ink, count=2):
     level (0): the row as it lies level, the likelier first. Where the row
     lies as low two ways (row_slopes), its slope is the lower one unless
     the other reads more letters of any kind, `count` of them (_seen):
-    which way is up is not decided by the letters hoped for."""
+    which way is up is not decided by the letters hoped for. Where both
+    read as many, and some, and both lie FAR_OFF level or more, which is
+    up is in doubt: the row is read level only. (A cadet's square O and G
+    touching, sloped 43 degrees, read one letter either way, and stood on
+    its end, the lower way, it is an E. A level QI lies as low at -50 and
+    50, and reads level.)"""
     x, y, w, h = box([p for line in ink for p in line])
     centre = (x + w / 2, y + h / 2)
 
     def level(tilt):
         return turned(ink, -tilt, centre) if tilt else ink
     slope, *rival = row_slopes(ink)
-    if rival and _seen(level(rival[0]), count) > _seen(level(slope), count):
-        slope = rival[0]
+    if rival:
+        seen, seen_rival = _seen(level(slope), count), _seen(level(rival[0]), count)
+        doubted = seen_rival == seen > 0 and min(abs(slope), abs(rival[0])) >= FAR_OFF
+        slope = 0 if doubted else rival[0] if seen_rival > seen else slope
     return [(tilt, centre, level(tilt)) for tilt in ([slope] if slope else []) + [0]]
 
 

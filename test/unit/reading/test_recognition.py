@@ -9,6 +9,7 @@ import pytest
 
 from turtle_letters.reading.ink import MAX_POINTS, outline, thinned, turned
 from turtle_letters.reading.recognition import read
+from turtle_letters.reading.forms import VARIANTS
 from turtle_letters.reading.rows import apart, read_row
 from turtle_letters.letters.font import FONT
 
@@ -321,3 +322,22 @@ def test_a_row_of_two_narrow_letters_tilted_reads_the_way_up_its_letters_stand(f
     assert ''.join(r.letter or '?' for r in read_row(ink, drawn)) == drawn
     read = ''.join(r.letter or '?' for r in read_row(ink, other))
     assert not any(r == o != d for r, o, d in zip(read, other, drawn)), read
+
+
+def test_a_row_whose_two_ways_up_read_alike_earns_no_letter_of_other_initials():
+    """A cadet's square O and G touching, sloped 43 degrees (the corpus's
+    aspect and gap): stood on its end, the lower way, it is an E within 4%
+    of its height, and the right way up reads no more letters of any kind.
+    Graded against EB, it once earned the E in place. Where two ways up
+    far off level read alike, the row is read level only."""
+    glyphs = dict(VARIANTS)
+    ink, x = [], 0.0
+    for letter in 'OG':
+        strokes = glyphs[letter]
+        left = min(px for s in strokes for px, _ in s)
+        ink += [[((px - left + x) * 0.756, py) for px, py in s] for s in strokes]
+        x += max(px for s in strokes for px, _ in s) - left + 0.027
+    ink = turned(ink, -43.1, (0.0, 0.0))
+    for initials in ('EB', 'EO'):
+        read = ''.join(r.letter or '?' for r in read_row(ink, initials))
+        assert not any(r == e for r, e in zip(read, initials)), read
