@@ -114,10 +114,13 @@ def read(drawing, expected):
 
 def each_alone(expected, rubric, box, facts, run):
     """A TA's try: executables started together (no launch file) that did
-    not draw the letters run each alone in a fresh world, the first
-    limits.alone of them, until one does; the best (facts, run) kept."""
+    not draw the letters run each alone in a fresh world, those that drove
+    a turtle first, limits.alone of them at most, until one draws them; the
+    best (facts, run) kept. Not where one of them alone acted on the
+    turtles: alone, it draws the same."""
     first, best = run, rubrics.grade(facts, rubric).score
-    for name in first.executables[:rubric.limits.alone] if len(first.executables) > 1 else []:
+    fought = len(first.executables) > 1 and not seen.one_driver(first.record, first.events)
+    for name in session.drivers_first(first)[:rubric.limits.alone] if fought else []:
         if box.stopped or len(rubrics.credited(facts)) == len(expected):
             break
         tried = session.alone(first, name, rubric.limits, box)

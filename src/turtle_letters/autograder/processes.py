@@ -103,6 +103,11 @@ class Capped:
                 return
             self.add(data)
 
+    def has(self, data):
+        """Whether `data` is in what is kept."""
+        with self.lock:
+            return data in self.head or data in self.tail
+
     def text(self, since=0):
         """What was printed from byte `since` on, what was left out said in a line."""
         with self.lock:

@@ -217,7 +217,7 @@ def generated_launch(box, package, only=None):
     names = sorted(set(scripts(copied)) | set(scripts(built, 0)))[:MAX_NODES]
     names = [only] if only else names
     lines = [f'  <node pkg={quoteattr(package.name)} type={quoteattr(name)} '
-             f'name="{_node_name(name)}{i}" output="screen"/>\n' for i, name in enumerate(names)]
+             f'name="{_node(name, i)}" output="screen"/>\n' for i, name in enumerate(names)]
     # a name of its own: the submission's build could have left a link anywhere in `work`
     fd, path = tempfile.mkstemp(prefix='grader_', suffix='.launch', dir=box.work)
     with os.fdopen(fd, 'w') as f:
@@ -226,9 +226,20 @@ def generated_launch(box, package, only=None):
     return path, names
 
 
-def _node_name(executable):
+def drivers_first(run):
+    """The executables a run started for want of a launch file, those whose
+    node drove a turtle over cmd_vel first (a TA tries the controllers
+    alone first), each part in name order."""
+    drove = seen.controllers(run.events)
+    first = [name for i, name in enumerate(run.executables) if f'/{_node(name, i)}' in drove]
+    return first + [name for name in run.executables if name not in first]
+
+
+def _node(executable, i):
+    """The name of the node the generated launch file starts `executable` as,
+    the i-th: of its file name, and unique."""
     stem = re.sub(r'[^A-Za-z0-9_]', '_', os.path.splitext(executable)[0])
-    return stem if stem[:1].isalpha() else f'n_{stem}'
+    return f'{stem}{i}' if stem[:1].isalpha() else f'n_{stem}{i}'
 
 
 def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
@@ -271,8 +282,9 @@ def _watch(lab, limits, result):
     terminal, watcher, alive = lab.terminal, lab.watcher, lab.going
     events, record = watcher.events, lab.world.events
     started = time.monotonic()
+    refused = Refused(terminal.output, limits.start)
     if not wait_until(lambda: _listening(events) or seen.moved(record, started),
-                      limits.launch, alive):
+                      limits.launch, lambda: alive() and not refused.waited_out()):
         result.launch = Step(False, 'the lab did not come up')
         return
     up = time.monotonic()
@@ -306,6 +318,20 @@ def _watch(lab, limits, result):
     else:
         result.still_from = shown
     result.cpu_pct = cpu.share()
+
+
+class Refused:
+    """A TA's patience with a launch that roslaunch refused a node of
+    ("cannot launch node"): the others get `seconds` more to come up."""
+    SAYS = b'cannot launch node'
+
+    def __init__(self, output, seconds):
+        self.output, self.seconds, self.said = output, seconds, None
+
+    def waited_out(self):
+        if self.said is None and self.output.has(self.SAYS):
+            self.said = time.monotonic()
+        return self.said is not None and time.monotonic() - self.said >= self.seconds
 
 
 def _waited(record, started, stand):

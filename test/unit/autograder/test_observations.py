@@ -3,8 +3,8 @@ ink counts (the grader's simulator's record), and who triggered it."""
 import pytest
 
 from turtle_letters.autograder.observations import (chatter_peak, drawing, drew, looked_for_from,
-                                                   moved, own_triggers, stood_for, strokes,
-                                                   roles, trigger, unprompted)
+                                                   moved, one_driver, own_triggers, stood_for,
+                                                   strokes, roles, trigger, unprompted)
 
 TICK = 0.016
 PEN = [179, 184, 255, 3]
@@ -218,3 +218,16 @@ def test_ink_in_the_backgrounds_colour_is_no_ink():
     erasing = [dict(e, ink=[s[:4] + [69, 86, 255, 3] for s in e['ink']]) for e in line(1, 5.0, 7.0)]
     d = drawing(erasing + line(5, 7.0, 8.0), [graph()], since=0.5, settle=5.0, until=12.0)
     assert len(d.strokes) == 1 and d.strokes[0][0] == (7.0, 5.0)
+
+
+def test_one_node_drove_alone_only_if_no_other_did_and_no_service_changed_the_world():
+    spawned = [dict(k='spawn', t=0.0, turtle='turtle1')]
+    drove = spawned + line(1, 4.0, 5.0)
+    assert one_driver(drove, [graph(controller='/controller0')])
+    assert not one_driver(drove, [graph(t=0.0, controller='/a'), graph(t=1.0, controller='/b')])
+    assert not one_driver(drove, [graph(cmd_vel_publishers=[])])
+    for called in (jump(2.0, 5.0, 6.0), dict(k='clear', t=2.0), dict(k='reset', t=2.0),
+                   dict(k='pen', t=2.0, turtle='turtle1', off=True),
+                   dict(k='spawn', t=2.0, turtle='t2'), dict(k='kill', t=2.0, turtle='t2'),
+                   dict(k='refused', t=2.0, call='spawn', why='full')):
+        assert not one_driver(drove + [called], [graph(controller='/controller0')]), called

@@ -3,12 +3,15 @@ a run (each reason alone ends it, among them a full record of the
 grader's simulator that said it stopped the run, and did not), what a
 failed build says, and what runs for want of a launch file."""
 import os
+import time
 from types import SimpleNamespace
 
 import pytest
 
 from turtle_letters.autograder import world
-from turtle_letters.autograder.session import first_error, generated_launch, prepare
+from turtle_letters.autograder.processes import Capped
+from turtle_letters.autograder.session import (Refused, drivers_first, first_error,
+                                               generated_launch, prepare)
 from turtle_letters.autograder.submission import find
 from turtle_letters.autograder.world import Lab
 
@@ -109,3 +112,30 @@ def test_scripts_handed_in_without_the_execute_bit_are_started_for_want_of_a_lau
     assert prepare(package, str(work)) == ['scripts/draw_m.py']
     path, names = generated_launch(SimpleNamespace(work=str(work)), package)
     assert names == ['draw_m.py'] and 'type="draw_m.py"' in open(path).read()
+
+
+def test_a_launch_roslaunch_refused_a_node_of_is_waited_for_only_a_while_after():
+    """roslaunch's refusal, in a terminal's output among its other lines
+    (and in the part kept of a long one), starts the others' time."""
+    output = Capped()
+    output.add(b'started roslaunch server\r\n' + b'.' * (2 * Capped.HEAD))
+    refused = Refused(output, 0.3)
+    assert not refused.waited_out()
+    time.sleep(0.4)
+    assert not refused.waited_out(), 'no refusal yet: the launch may take its whole limit'
+    output.add(b'\x1b[31mERROR: cannot launch node of type [lab/controler.py]\x1b[0m\r\n')
+    assert not refused.waited_out()
+    time.sleep(0.4)
+    assert refused.waited_out()
+
+
+def test_executables_that_drove_together_are_tried_alone_first():
+    """The generated launch file's node names (of the file, and its place)
+    tell which executable drove: spin_forever.py and n_controller.py did,
+    keyboard.py only talked."""
+    graph = dict(kind='graph', t=1.0, cmd_vel_publishers=['/spin_forever2', '/n_controller1'])
+    run = SimpleNamespace(executables=['keyboard.py', 'n_controller.py', 'spin_forever.py'],
+                          events=[graph])
+    assert drivers_first(run) == ['n_controller.py', 'spin_forever.py', 'keyboard.py']
+    graph['cmd_vel_publishers'] = ['/keyboard1']    # a name that is not its place: no driver
+    assert drivers_first(run) == run.executables

@@ -35,10 +35,13 @@ class Place:
         yield self.box
 
 
-def run_of(name, executables=()):
-    """A fake session.Run: its steps, what it started, its log."""
+def run_of(name, executables=(), drivers=()):
+    """A fake session.Run: its steps, what it started, who published on
+    cmd_vel, its log."""
+    graph = dict(kind='graph', t=1.0, cmd_vel_publishers=list(drivers))
     return SimpleNamespace(name=name, build=OK, launch=Step(False, f'{name} launched'),
-                           waited=OK, talker=OK, stuck='', limit='', broken='', events=[],
+                           waited=OK, talker=OK, stuck='', limit='', broken='', events=[graph],
+                           record=[dict(k='spawn', t=0.0, turtle='turtle1')],
                            executables=list(executables), cpu_pct=None,
                            log=[(f'roslaunch ({name})', f'{name} ran')])
 
@@ -68,6 +71,27 @@ def test_executables_that_drew_nothing_together_run_each_alone_until_one_draws(
         assert 'b.py ran' in f.read()
     with open(tmp_path / 'out' / 's1' / 'results.json') as f:
         assert json.load(f)['score'] == row.grade.score
+
+
+def test_executables_of_which_one_alone_drove_are_not_run_alone(tmp_path, monkeypatch):
+    """Together, controller.py drove an L (P expected) and talker.py only
+    talked: alone, each would do the same, so the together run is the row."""
+    monkeypatch.setattr(driver.submission, 'find', lambda folder: Package(
+        name="lab", folder=folder, launch=None, problem='', notes=[]))
+    monkeypatch.setattr(driver.session, 'run', lambda package, limits, box: run_of(
+        'together', ['controller.py', 'talker.py'], drivers=['/controller0']))
+
+    def alone(*_):
+        raise AssertionError('no executable is run alone where one alone drove')
+    monkeypatch.setattr(driver.session, 'alone', alone)
+
+    def observed(expected, run, rubric):      # the L it drew, stood in for
+        drawing = Drawing([L_PATH], 1.0, 5.0, 200, [])
+        return rubrics.Facts.observed(expected, run, drawing, *driver.read(drawing, expected))
+    monkeypatch.setattr(driver, 'observed', observed)
+    row, facts = driver.grade(Student('s3', 'Pavel', 'P', str(tmp_path)), RUBRIC,
+                              str(tmp_path / 'out'), Place())
+    assert facts.launch.says == 'together launched' and row.drawn == 'L'
 
 
 def test_a_package_that_cannot_be_found_is_a_row_that_says_why_and_runs_nothing(
