@@ -24,6 +24,7 @@ from .submission import MAX_NODES, Package, copy, made_executable, python_script
 from .world import Lab, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
+REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch file it cannot start
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
                  'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
@@ -189,8 +190,7 @@ def _unbuilt(box, limits, result):
 def _refused(result):
     """Whether roslaunch refused to start a node of the package's launch file."""
     return bool(result.package.launch) and result.launch is not None and \
-        not result.launch.ok and result.launch.says.startswith('cannot launch node')
-
+        not result.launch.ok and result.launch.says.startswith(REFUSAL)
 
 
 def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
@@ -275,6 +275,19 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
                                     f'({result.generated}) as a launch file would')
 
 
+class Refused:
+    """A TA's patience with a launch that roslaunch refused a node of
+    (REFUSAL): the others get `seconds` more to come up."""
+
+    def __init__(self, output, seconds):
+        self.output, self.seconds, self.said = output, seconds, None
+
+    def waited_out(self):
+        if self.said is None and self.output.has(REFUSAL.encode()):
+            self.said = time.monotonic()
+        return self.said is not None and time.monotonic() - self.said >= self.seconds
+
+
 def _watch(lab, limits, result):
     """Launched at `started`: up once a node listens on /chatter or a turtle
     moves; P typed after the turtle stood for limits.stand; the drawing
@@ -318,20 +331,6 @@ def _watch(lab, limits, result):
     else:
         result.still_from = shown
     result.cpu_pct = cpu.share()
-
-
-class Refused:
-    """A TA's patience with a launch that roslaunch refused a node of
-    ("cannot launch node"): the others get `seconds` more to come up."""
-    SAYS = b'cannot launch node'
-
-    def __init__(self, output, seconds):
-        self.output, self.seconds, self.said = output, seconds, None
-
-    def waited_out(self):
-        if self.said is None and self.output.has(self.SAYS):
-            self.said = time.monotonic()
-        return self.said is not None and time.monotonic() - self.said >= self.seconds
 
 
 def _waited(record, started, stand):

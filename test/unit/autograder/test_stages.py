@@ -46,6 +46,14 @@ def run_of(name, executables=(), drivers=()):
                            log=[(f'roslaunch ({name})', f'{name} ran')])
 
 
+def observing(drawn):
+    """A stand-in for driver.observed: what each run's record showed, {run name: Drawing}."""
+    def observed(expected, run, rubric):
+        drawing = drawn.get(run.name)
+        return rubrics.Facts.observed(expected, run, drawing, *driver.read(drawing, expected))
+    return observed
+
+
 def test_executables_that_drew_nothing_together_run_each_alone_until_one_draws(
         tmp_path, monkeypatch):
     """Together, three executables drew nothing; alone, a.py draws nothing
@@ -57,12 +65,8 @@ def test_executables_that_drew_nothing_together_run_each_alone_until_one_draws(
         'together', ['a.py', 'b.py', 'c.py']))
     monkeypatch.setattr(driver.session, 'alone', lambda first, name, limits, box: (
         tried.append(name), run_of(name))[1])
-    drawn = {'b.py': Drawing([L_PATH], 1.0, 5.0, 200, [])}
-
-    def observed(expected, run, rubric):      # what the run's record showed, stood in for
-        drawing = drawn.get(run.name)
-        return rubrics.Facts.observed(expected, run, drawing, *driver.read(drawing, expected))
-    monkeypatch.setattr(driver, 'observed', observed)
+    l_drawn = Drawing([L_PATH], 1.0, 5.0, 200, [])
+    monkeypatch.setattr(driver, 'observed', observing({'b.py': l_drawn}))
     row, facts = driver.grade(Student('s1', 'Lena', 'L', str(tmp_path)), RUBRIC,
                               str(tmp_path / 'out'), Place())
     assert tried == ['a.py', 'b.py']
@@ -84,11 +88,8 @@ def test_executables_of_which_one_alone_drove_are_not_run_alone(tmp_path, monkey
     def alone(*_):
         raise AssertionError('no executable is run alone where one alone drove')
     monkeypatch.setattr(driver.session, 'alone', alone)
-
-    def observed(expected, run, rubric):      # the L it drew, stood in for
-        drawing = Drawing([L_PATH], 1.0, 5.0, 200, [])
-        return rubrics.Facts.observed(expected, run, drawing, *driver.read(drawing, expected))
-    monkeypatch.setattr(driver, 'observed', observed)
+    l_drawn = Drawing([L_PATH], 1.0, 5.0, 200, [])
+    monkeypatch.setattr(driver, 'observed', observing({'together': l_drawn}))
     row, facts = driver.grade(Student('s3', 'Pavel', 'P', str(tmp_path)), RUBRIC,
                               str(tmp_path / 'out'), Place())
     assert facts.launch.says == 'together launched' and row.drawn == 'L'
