@@ -13,12 +13,14 @@ as many as there are. Travel with the pen up is no part of it; a cadet who
 retraces strokes to reach the next one loses nothing either, since
 retraced ink lies on the strokes.
 """
+import functools
 import math
 import string
 from typing import Dict, List, NamedTuple, Optional
 
 import numpy
 from scipy.ndimage import distance_transform_edt
+from scipy.spatial.distance import directed_hausdorff
 
 from .forms import READABLE, Point, grid_rows, templates
 from .ink import CELL, WIDEST, box, outline, sampled, thinned, turned
@@ -71,11 +73,21 @@ class Distances:
         self.grid[self.rows(ys), self.cols(xs)] = False
         self.grid = distance_transform_edt(self.grid) * CELL
 
+    def cells(self, xs, ys):
+        """The grid's cells that points lie in, as (row, column), in floats."""
+        return numpy.column_stack((self.rows(ys), self.cols(xs))).astype(float)
+
     def rows(self, ys):
-        return numpy.clip(grid_rows(ys), 0, self.grid.shape[0] - 1)
+        return _within(grid_rows(ys), self.grid.shape[0])
 
     def cols(self, xs):
-        return numpy.clip(numpy.rint((xs - self.lo) / CELL).astype(int) + 1, 0, self.grid.shape[1] - 1)
+        return _within(numpy.rint((xs - self.lo) / CELL).astype(int) + 1, self.grid.shape[1])
+
+
+def _within(indices, size):
+    """`indices` past either edge of `size` put on it (numpy.clip, without its cost on
+    small arrays: a reading takes a hundred thousand)."""
+    return numpy.minimum(numpy.maximum(indices, 0), size - 1)
 
 
 class Fitting:
@@ -95,33 +107,41 @@ class Fitting:
         self.lo, self.hi = min(0.0, (aspect - width.max()) / 2), max(aspect, (aspect + width.max()) / 2)
         self.ink = Distances(drawn[:, 0], drawn[:, 1], self.lo, self.hi)
 
+    @functools.cached_property
+    def inked(self):
+        """The ink's cells, for fit(): the few candidates fitted exactly need them."""
+        return self.ink.cells(self.drawn[:, 0], self.drawn[:, 1])
+
     @property
     def chosen(self):
         return self.choice.chosen
 
-    def _on_ink(self, points):
-        """How far from the ink each of the choice's `points` (indices) lies, placed."""
-        slot = self.choice.slot[points]
+    def _on_ink(self, points, slot):
+        """How far from the ink each of the choice's `points` (indices or a
+        slice) lies, placed: each of candidate `slot` (its index, or one a point)."""
         xs = self.left[slot] + self.choice.xs[points] * self.across[slot]
-        rows = numpy.clip(self.choice.rows[points], 0, self.ink.grid.shape[0] - 1)
+        rows = _within(self.choice.rows[points], self.ink.grid.shape[0])
         return self.ink.grid[rows, self.ink.cols(xs)]
 
     def bounds(self):
         """Each candidate's farthest point from the ink, of its sparse ones: below its bound."""
-        return numpy.maximum.reduceat(self._on_ink(self.choice.sparse),
+        sparse = self.choice.sparse
+        return numpy.maximum.reduceat(self._on_ink(sparse, self.choice.slot[sparse]),
                                       self.choice.sparse_starts[:-1])
 
     def bound(self, i):
         """Candidate i's farthest point from the ink, of all its points: its fit is no less."""
-        return float(self._on_ink(numpy.arange(self.choice.starts[i], self.choice.starts[i + 1])).max())
+        return float(self._on_ink(slice(self.choice.starts[i], self.choice.starts[i + 1]),
+                                  i).max())
 
     def fit(self, i, bound):
-        """Candidate i's fit: the worse of its bound and how far the ink strays from it."""
+        """Candidate i's fit: the worse of its bound and how far the ink strays from it,
+        cell to nearest cell on the ink's grid (scipy's directed Hausdorff distance: the
+        same figure as a distance transform of the candidate gives, at a third of its cost)."""
         part = slice(self.choice.starts[i], self.choice.starts[i + 1])
         xs = self.left[i] + self.choice.xs[part] * self.across[i]
-        shape = Distances(xs, self.choice.ys[part], self.lo, self.hi)
-        return max(bound, float(shape.grid[shape.rows(self.drawn[:, 1]),
-                                           shape.cols(self.drawn[:, 0])].max()))
+        shape = self.ink.cells(xs, self.choice.ys[part])
+        return max(bound, float(directed_hausdorff(self.inked, shape)[0]) * CELL)
 
 
 class _Found(NamedTuple):
