@@ -92,6 +92,20 @@ def squarest_turn(ink):
     return round(float(numpy.degrees(angles[least])), 1)
 
 
+def inside(points, line, share=0.5):
+    """Whether more than `share` of `points` lie inside the closed `line`
+    (even-odd, by a ray from each to the right): an edge that touches
+    another, overlapping it a little, is not inside it."""
+    points = numpy.asarray(points, dtype=float).reshape(-1, 2)[::max(1, len(points) // 24)]
+    edge = numpy.asarray(line, dtype=float).reshape(-1, 2)
+    a, b = edge[:-1], edge[1:]
+    x, y = points[:, :1], points[:, 1:]
+    spans = (a[:, 1] > y) != (b[:, 1] > y)
+    with numpy.errstate(divide='ignore', invalid='ignore'):
+        crossing = a[:, 0] + (y - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+    return float(numpy.mean((spans & (x < crossing)).sum(axis=1) % 2 == 1)) > share
+
+
 def closed(line, height):
     """Whether a line of ink comes back where it began: a contour."""
     return len(line) > 3 and math.dist(line[0], line[-1]) <= CLOSED * height

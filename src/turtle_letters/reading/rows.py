@@ -19,7 +19,7 @@ from typing import List
 
 import numpy
 
-from .ink import box, samples, turned
+from .ink import box, closed, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
 from .recognition import MOST_TILT, SAMPLE, Reading, read
 
@@ -111,7 +111,9 @@ class Row:
 
 def apart(ink):
     """The ink's letters, left to right: lines whose spans across overlap,
-    or lie less than GAP of the row's height apart, are one letter's."""
+    or lie less than GAP of the row's height apart, are one letter's; in a
+    row drawn round its letters' edges (ink.outline), touching or not, each
+    closed line that lies inside no other is a letter's edge (by_edges)."""
     lines = sorted((line for line in ink if line), key=lambda line: min(p[0] for p in line))
     if not lines:
         return []
@@ -124,7 +126,33 @@ def apart(ink):
             groups[-1][1] = max(groups[-1][1], right)
         else:
             groups.append([[line], right])
-    return [group for group, _ in groups]
+    if len(lines) < 2 or outline(lines) is None:
+        return [group for group, _ in groups]
+    return [letter for group, _ in groups for letter in by_edges(group, height)]
+
+
+def by_edges(lines, height):
+    """The letters of `lines` drawn round their edges: each closed line
+    mostly inside no other, with those mostly inside it (its holes, an O's
+    inner edge); a line that is not closed goes with the letter whose span
+    across holds its middle, else the first. Left to right."""
+    edges = [line for line in lines if closed(line, height)]
+    inner = {id(line) for line in edges
+             if any(other is not line and inside(line, other) for other in edges)}
+    letters = [[line] for line in edges if id(line) not in inner]
+    if not letters:
+        return [lines]
+    for line in lines:
+        if id(line) in inner:
+            home = [letter for letter in letters if inside(line, letter[0])]
+        elif not closed(line, height):
+            middle = (min(p[0] for p in line) + max(p[0] for p in line)) / 2
+            home = [letter for letter in letters
+                    if min(p[0] for p in letter[0]) <= middle <= max(p[0] for p in letter[0])]
+        else:
+            continue
+        (home or letters)[0].append(line)
+    return sorted(letters, key=lambda letter: min(p[0] for p in letter[0]))
 
 
 def cut(row, expected, ahead=True):

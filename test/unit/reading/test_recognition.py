@@ -179,6 +179,38 @@ def test_an_outline_is_read_by_its_middle_line_and_as_no_other_letter(letter):
         assert reading.letter == letter, (tilt, reading.best)
 
 
+def outline_row(text, gap):
+    """BLOCKS side by side, each `gap` after the last (less than 0: overlapping)."""
+    return [[(1 + 2.0 * k + gap * k + x, 2 + y) for x, y in BLOCKS[letter]]
+            for k, letter in enumerate(text)]
+
+
+@pytest.mark.parametrize('text, gap, tilt, other', [
+    ('HE', 0.0, 0, 'IL'), ('EH', -0.2, 20, 'FE'), ('LT', 0.0, 20, 'IT'), ('TEL', -0.2, 0, 'ILL')])
+def test_a_row_of_touching_outline_letters_reads_edge_by_edge(text, gap, tilt, other):
+    """Block capitals drawn round their edges, touching or overlapping:
+    each closed edge is a letter, never cut through (an H's leg cut off it
+    is a block I, an E's end an F)."""
+    ink = turned(outline_row(text, gap), tilt, (3, 3))
+    assert ''.join(r.letter or '?' for r in read_row(ink, text)) == text
+    read = [r.letter for r in read_row(ink, other)]
+    assert not any(r == o != t for r, o, t in zip(read, other, text)), read
+
+
+def test_an_outline_row_with_fewer_letters_than_expected_reads_each_edge_once():
+    """The three letters drawn, each once: a letter's edge is not read
+    again in the place after it."""
+    ink = outline_row('TEL', -0.2)
+    assert ''.join(r.letter or '?' for r in read_row(ink, 'TELL')) == 'TEL'
+
+
+def test_a_letters_inner_edge_is_its_own_in_a_row_drawn_round_its_edges():
+    square_o = [[(0, 0), (0, 3), (2, 3), (2, 0), (0, 0)],
+                [(0.6, 0.6), (0.6, 2.4), (1.4, 2.4), (1.4, 0.6), (0.6, 0.6)]]
+    l_beside = [[(1.9 + x, y) for x, y in BLOCKS['L']]]    # overlapping the O a little
+    assert [len(group) for group in apart(l_beside + square_o)] == [2, 1]
+
+
 @pytest.mark.parametrize('aspect', [0.7, 0.8])
 def test_ink_that_fits_two_letters_alike_reads_as_neither(aspect):
     """DejaVu Sans Bold's J as an outline, narrowed and tilted 25 degrees:
