@@ -137,7 +137,7 @@ class Fitting:
     def fit(self, i, bound):
         """Candidate i's fit: the worse of its bound and how far the ink strays from it,
         cell to nearest cell on the ink's grid (scipy's directed Hausdorff distance: the
-        same figure as a distance transform of the candidate gives, at a third of its cost)."""
+        figure a distance transform of the candidate gave, in about two thirds of its time)."""
         part = slice(self.choice.starts[i], self.choice.starts[i + 1])
         xs = self.left[i] + self.choice.xs[part] * self.across[i]
         shape = self.ink.cells(xs, self.choice.ys[part])
