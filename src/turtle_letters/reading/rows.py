@@ -1,8 +1,8 @@
 """The letters a row of ink draws, left to right, as a cadet draws their
-initials: set apart where clear space parts them, else cut where the
-parts read as the letters expected; the row read turned back by its
-slope; specks and unfinished letters no letter. Each letter is read by
-recognition.read. No ROS here.
+initials: set apart where clear space parts them (or, drawn round their
+edges, edge by edge), else cut where the parts read as the letters
+expected; the row read turned back by its slope; specks and unfinished
+letters no letter. Each letter is read by recognition.read. No ROS here.
 
 A row is cut several ways (looking ahead or not, turned back or level),
 and the ways share parts: a Row works out each part's fit and reading
