@@ -220,6 +220,8 @@ def _letters_over(painter, letters, view):
             for stroke in strokes:
                 for a, b in zip(stroke, stroke[1:]):
                     painter.drawLine(px(a), px(b))
+                if len(stroke) == 1:        # a block letter's middle line is points
+                    painter.drawEllipse(px(stroke[0]), pen.widthF(), pen.widthF())
         corner_px = px((min(x for s in strokes for x, _ in s), max(y for s in strokes for _, y in s)))
         painter.fillRect(QRectF(corner_px.x(), corner_px.y() - 16, 9 * len(label) + 6, 15),
                          QColor('white'))

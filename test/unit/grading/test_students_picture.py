@@ -50,10 +50,24 @@ def test_only_the_letters_given_are_drawn_over_the_ink(tmp_path):
     same_left = all(a.pixel(x, y) == b.pixel(x, y) for x in range(10, CANVAS_PIXELS, 7)
                     for y in range(40, a.height(), 7))
     assert differ > 50 and same_left
-    def black_in_right(image):
-        return sum(colour_at(image, x, y) == (0, 0, 0) for x in right_half[::2]
-                   for y in range(45, image.height() - 15, 2))
-    assert black_in_right(a) == 0 < black_in_right(b)   # the letter's outline, black under white
+    assert black_in_zoom(a) == 0 < black_in_zoom(b)   # the letter's outline, black under white
+
+
+def black_in_zoom(image):
+    """How many black pixels the enlarged ink's frame holds, on a grid of 2 px."""
+    return sum(colour_at(image, x, y) == (0, 0, 0)
+               for x in range(CANVAS_PIXELS + 25, image.width() - 5, 2)
+               for y in range(45, image.height() - 15, 2))
+
+
+def test_a_letter_read_by_its_middle_line_is_drawn_as_its_points(tmp_path):
+    """A block letter is read by its middle line, whose candidates are
+    points (lines of one point each): each is drawn over the ink."""
+    strokes, looks = [[(2.0, 5.0), (2.0, 2.0), (3.5, 2.0)]], [(*GREEN, 3)]
+    middle = [[(2.1, 2.1 + 0.1 * i)] for i in range(29)] + [[(2.2 + 0.1 * i, 2.1)] for i in range(12)]
+    path = str(tmp_path / 'middle.png')
+    draw_ink(path, strokes, looks, BACKGROUND, [('L', middle)], 'an L read by its middle line')
+    assert black_in_zoom(QImage(path)) > 20
 
 
 def test_pictures_painted_in_several_threads_at_once_are_those_painted_in_the_main_one(tmp_path):
