@@ -20,8 +20,8 @@ _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
 # How cadets draw letters with rotate and move, beside the font's glyphs:
 # square corners, a K's arms meeting at the stem's middle, an A's bar from a
 # quarter to half its height, an N with level feet, M and N as zigzags (a
-# real class's MF), an I of one stroke. A
-# square-cornered O is an O: no D is drawn with four right angles.
+# real class's MF), an I of one stroke, a J barred across its top (another
+# class's Jo). A square-cornered O is an O: no D is drawn with four right angles.
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),
@@ -31,6 +31,8 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('G', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0), (0.6, 0.45), (0.3, 0.45)]]),
     ('I', [[(0, 0), (0, 1)]]),
     ('J', [[(0.6, 1), (0.6, 0), (0, 0), (0, 0.3)]]),
+    ('J', [[(0, 1), (0.6, 1)], [(0.4, 1), (0.4, 0.2), (0.34, 0.06), (0.2, 0), (0.06, 0.06),
+                                (0, 0.2)]]),                              # barred, a real class's
     ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
     ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
     ('M', [[(0, 0), (0.175, 1), (0.35, 0), (0.525, 1), (0.7, 0)]]),     # a zigzag, no upright

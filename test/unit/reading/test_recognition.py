@@ -159,6 +159,26 @@ def test_m_and_n_drawn_as_zigzags_with_no_upright_leg(letter, zigzag):
     assert reading.letter == letter, reading.best
 
 
+def barred_j(hook_left=True):
+    """A J with a bar across its top, as people write it: the bar, then the
+    stem down from its middle and a half circle round to the left, in one
+    line, the turtle turning as it moves (`hook_left` False: mirrored)."""
+    side = 1 if hook_left else -1
+    arc = [(0.45 - side * 0.225 * (1 - math.cos(math.radians(a))),
+            0.25 - 0.225 * math.sin(math.radians(a))) for a in range(0, 181, 10)]
+    return [[(0.05, 1), (0.85, 1)], [(0.45, 1), (0.45, 0.25)] + arc]
+
+
+@pytest.mark.parametrize('tilt', [0, -20, 20])
+def test_a_j_with_a_bar_across_its_top_and_not_mirrored(tilt):
+    """A real class's Jo: a J barred at its top, which no form read."""
+    def drawn(j):
+        return turned([placed(line, 2.0, 2.0, 3.0, 1.2) for line in j], tilt, (3, 3.5))
+    reading = read(drawn(barred_j()))
+    assert reading.letter == 'J', reading.best
+    assert read(drawn(barred_j(hook_left=False))).letter != 'J'
+
+
 BLOCKS = {   # block capitals drawn round their edge, 3 high, bands 0.6 wide
     'H': [(0, 0), (0, 3), (0.6, 3), (0.6, 1.8), (1.4, 1.8), (1.4, 3), (2, 3), (2, 0), (1.4, 0),
           (1.4, 1.2), (0.6, 1.2), (0.6, 0), (0, 0)],
