@@ -20,10 +20,12 @@ from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, Reader
 from .rubric import Limits
-from .submission import MAX_NODES, Package, copy, made_executable, python_scripts, scripts
+from .submission import (MAX_NODES, Package, bare_shell, copy, made_executable, python_scripts,
+                         scripts, starts_own)
 from .world import Lab, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
+BASH = ' launch-prefix="bash"'  # a shell script without #! is run with bash, as a TA types it
 REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch file it cannot start
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
@@ -51,6 +53,7 @@ class Run:
         self.limit = ''         # the sandbox's limit the submission reached, in words
         self.generated = ''     # the executables the grader started, for want of a launch file
         self.executables = []   # ... each by name
+        self.passed_over = None  # the package's launch file, which starts none of them
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
 
@@ -207,23 +210,33 @@ def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
     return result
 
 
-def generated_launch(box, package, only=None):
-    """For a package without a launch file, the one the grader writes: each
-    executable of the package (its scripts, and what its build made) started
-    as rosrun would, all in roslaunch's terminal (or `only` that one). Its
-    path, and the names."""
+def executables(box, package):
+    """The package's executables, by name: its scripts (made executable) and
+    what its build made."""
     built = os.path.join(box.work, 'ws', 'devel', 'lib', package.name)
-    copied = os.path.join(box.work, 'ws', 'src', package.name)     # its scripts made executable
-    names = sorted(set(scripts(copied)) | set(scripts(built, 0)))[:MAX_NODES]
-    names = [only] if only else names
+    return sorted(set(scripts(_copied(box, package))) | set(scripts(built, 0)))[:MAX_NODES]
+
+
+def _copied(box, package):
+    return os.path.join(box.work, 'ws', 'src', package.name)
+
+
+def generated_launch(box, package, names):
+    """The launch file the grader writes where a package has none that
+    starts its nodes: each executable of `names` started as rosrun would,
+    all in roslaunch's terminal (a shell script without #!, with bash). Its
+    path. (The grader runs turtlesim itself: a launch file of turtlesim and
+    its teleop alone adds nothing, and a real class's failed to parse.)"""
+    shell = set(bare_shell(_copied(box, package)))
     lines = [f'  <node pkg={quoteattr(package.name)} type={quoteattr(name)} '
-             f'name="{_node(name, i)}" output="screen"/>\n' for i, name in enumerate(names)]
+             f'name="{_node(name, i)}" output="screen"{BASH if name in shell else ""}/>\n'
+             for i, name in enumerate(names)]
     # a name of its own: the submission's build could have left a link anywhere in `work`
     fd, path = tempfile.mkstemp(prefix='grader_', suffix='.launch', dir=box.work)
     with os.fdopen(fd, 'w') as f:
         f.write('<launch>\n' + ''.join(lines) + '</launch>\n')
     os.chmod(path, 0o644)
-    return path, names
+    return path
 
 
 def drivers_first(run):
@@ -243,13 +256,14 @@ def _node(executable, i):
 
 
 def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
-    work = box.work
-    if result.package.launch:
-        launch = [result.package.name, os.path.basename(result.package.launch)]
+    work, package = box.work, result.package
+    names = [only] if only else executables(box, package)
+    if package.launch and (not names or starts_own(package)):
+        launch = [package.name, os.path.basename(package.launch)]
     else:
-        path, result.executables = generated_launch(box, result.package, only)
-        launch = [path]
-        result.generated = ', '.join(result.executables) or 'none'
+        launch = [generated_launch(box, package, names)]
+        result.executables, result.passed_over = names, package.launch
+        result.generated = ', '.join(names) or 'none'
     # Sourced first: the stand-in's workspace goes before the package's own.
     # Unbuilt, the package is found in its source folder, as rosrun finds scripts.
     setup = ('export ROS_PACKAGE_PATH="$0/ws/src:$ROS_PACKAGE_PATH"' if unbuilt else
@@ -270,7 +284,11 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
         if watcher_said.strip():
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
     _explain(result, lab.terminal, work)
-    if result.generated and result.launch is not None:
+    if result.passed_over and result.launch is not None:
+        result.launch = Step(False, f'{result.passed_over} starts no node of {package.name}: '
+                                    f'the grader started its executables ({result.generated}) '
+                                    f'instead, as a TA would')
+    elif result.generated and result.launch is not None:
         result.launch = Step(False, f'no launch file: the grader started its executables '
                                     f'({result.generated}) as a launch file would')
 

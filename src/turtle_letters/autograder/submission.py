@@ -124,15 +124,29 @@ def _included(path, launch_file, packages):
 
 def lab_launch(folder, packages=None):
     """(rank, file): the launch file whose whole tree starts turtlesim and a
-    node of another package (the cadet's controller), rank 0; else one with
-    turtlesim, or with another node; else the first; (4, None) for none."""
+    node of the submission's own packages (`packages`: name: folder; the
+    cadet's controller), rank 0; else one with turtlesim, or with an own
+    node; else the first; (4, None) for none. (rosbag's or rqt_graph's nodes
+    are no controller: a real class's launch that replayed a bag from its
+    author's home was taken over the one that started turtlesim.)"""
+    packages = packages or {package_name(folder): folder}
     ranked = [(4, None)]
     for name in launch_files(folder):
-        started = nodes(os.path.join(folder, name), packages or {'': folder})
+        started = nodes(os.path.join(folder, name), packages)
         has_sim = any(pkg == 'turtlesim' for pkg, _ in started)
-        has_other = any(pkg != 'turtlesim' for pkg, _ in started)
-        ranked.append((3 - 2 * has_sim - has_other, name))
+        has_own = any(pkg in packages for pkg, _ in started)
+        ranked.append((3 - 2 * has_sim - has_own, name))
     return min(ranked, key=lambda r: (r[0], r[1] or ''))
+
+
+def starts_own(package: 'Package'):
+    """Whether the package's launch file starts a node of the submission's
+    own packages, not only turtlesim's (a course whose cadets start the
+    simulator with roslaunch and then run their script by hand)."""
+    folders = [package.folder] + list(package.others)
+    packages = {package_name(f): f for f in reversed(folders)}
+    started = nodes(os.path.join(package.folder, package.launch), packages)
+    return any(pkg in packages for pkg, _ in started)
 
 
 def package_name(folder):
@@ -247,16 +261,24 @@ def _executable(entries):
 
 def made_executable(folder, depth=3):
     """A TA's fallback: the plain files under `folder` (the package's copy)
-    that start with #! but were handed in without the execute bit (mode
-    644), made executable, as a TA would before running them. Their paths
+    that start with #! or end in .sh but were handed in without the execute
+    bit (mode 644), made executable, as a TA would before running them. Their paths
     in the package."""
     made = []
     for entry in _plain_files(folder, depth, lambda found: False):
-        if not os.access(entry.path, os.X_OK) and _starts_with_shebang(entry.path) \
-                and len(made) < MAX_NODES:
+        runnable = _starts_with_shebang(entry.path) or entry.name.endswith('.sh')
+        if not os.access(entry.path, os.X_OK) and runnable and len(made) < MAX_NODES:
             os.chmod(entry.path, entry.stat(follow_symlinks=False).st_mode | 0o111)
             made.append(os.path.relpath(entry.path, folder))
     return sorted(made)
+
+
+def bare_shell(folder, depth=3):
+    """The names of the plain files in a package's folders that end in .sh
+    and do not start with #!: shell scripts a TA runs with bash, as such a
+    course's instructions say (`bash turtleletterstwo.sh`)."""
+    return sorted(entry.name for entry in _plain_files(folder, depth, lambda found: False)
+                  if entry.name.endswith('.sh') and not _starts_with_shebang(entry.path))
 
 
 def _starts_with_shebang(path):

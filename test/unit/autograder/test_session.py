@@ -10,8 +10,8 @@ import pytest
 
 from turtle_letters.autograder import world
 from turtle_letters.autograder.processes import Capped
-from turtle_letters.autograder.session import (Refused, drivers_first, first_error,
-                                               generated_launch, prepare)
+from turtle_letters.autograder.session import (Refused, drivers_first, executables,
+                                               first_error, generated_launch, prepare)
 from turtle_letters.autograder.submission import find
 from turtle_letters.autograder.world import Lab
 
@@ -110,8 +110,31 @@ def test_scripts_handed_in_without_the_execute_bit_are_started_for_want_of_a_lau
     work = tmp_path / 'work'
     package = find(str(tmp_path / 'sub'))
     assert prepare(package, str(work)) == ['scripts/draw_m.py']
-    path, names = generated_launch(SimpleNamespace(work=str(work)), package)
-    assert names == ['draw_m.py'] and 'type="draw_m.py"' in open(path).read()
+    box = SimpleNamespace(work=str(work))
+    assert executables(box, package) == ['draw_m.py']
+    assert 'type="draw_m.py"' in open(generated_launch(box, package, ['draw_m.py'])).read()
+
+
+def test_a_shell_script_without_its_bang_is_started_with_bash(tmp_path):
+    """A real class's package: its launch file starts turtlesim alone; its
+    letters are a shell script of rosservice and rostopic calls, mode 644
+    and without #!, which its cadets ran with bash. The grader's launch
+    file starts the script with bash."""
+    folder = tmp_path / 'sub' / 'hw'
+    (folder / 'scripts').mkdir(parents=True)
+    (folder / 'launch').mkdir()
+    (folder / 'package.xml').write_text('<package format="2"><name>hw</name></package>')
+    (folder / 'launch' / 'turtle.launch').write_text(
+        '<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/></launch>')
+    (folder / 'scripts' / 'letters.sh').write_text('rosservice call /clear\n')
+    os.chmod(folder / 'scripts' / 'letters.sh', 0o644)
+    work = tmp_path / 'work'
+    package = find(str(tmp_path / 'sub'))
+    assert prepare(package, str(work)) == ['scripts/letters.sh']
+    box = SimpleNamespace(work=str(work))
+    assert executables(box, package) == ['letters.sh']
+    text = open(generated_launch(box, package, ['letters.sh'])).read()
+    assert 'type="letters.sh" name="letters0" output="screen" launch-prefix="bash"/>' in text
 
 
 def test_a_launch_roslaunch_refused_a_node_of_is_waited_for_only_a_while_after():

@@ -54,6 +54,30 @@ def test_the_launch_file_is_chosen_by_its_whole_tree_of_includes_and_groups(tmp_
     assert submission.nodes(lab + '/launch/self.launch', {'a_lab': lab}) == []    # ends
 
 
+def test_a_bag_replayed_or_a_graph_drawn_is_no_controller(tmp_path):
+    """A real class's package: a launch file that starts turtlesim and its
+    teleop, and one that replays a bag and draws rqt_graph. Neither starts a
+    node of the package: the one with turtlesim is the lab's, and starts none
+    of its own (its cadets run their script by hand)."""
+    sim = ('<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/>'
+           '<node pkg="turtlesim" type="turtle_teleop_key" name="t"/></launch>')
+    bag = ('<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/>'
+           '<node pkg="rosbag" type="play" name="p"/><node pkg="rqt_graph" type="rqt_graph" '
+           'name="g"/></launch>')
+    make(tmp_path, {'hw/package.xml': PACKAGE.format('hw'), 'hw/launch/turtle.launch': sim,
+                    'hw/launch/turtle_remap.launch': bag,
+                    'hw/scripts/letters.sh': 'rosservice call /clear\n'})
+    package = find(str(tmp_path))
+    assert package.launch == 'launch/turtle.launch'
+    assert not submission.starts_own(package)
+    assert submission.bare_shell(package.folder) == ['letters.sh']
+    make(tmp_path, {'hw/launch/turtle.launch': sim.replace('</launch>', '<node pkg="hw" '
+                                                           'type="letters.sh" name="l"/></launch>'),
+                    'hw/scripts/letters.sh': '#!/bin/bash\nrosservice call /clear\n'})
+    assert submission.starts_own(find(str(tmp_path)))
+    assert submission.bare_shell(package.folder) == []
+
+
 def test_no_package_no_name_no_launch_file(tmp_path):
     assert find(str(tmp_path)).problem == f'no package.xml in {tmp_path}'
     make(tmp_path, {'a/package.xml': '<package format="2"></package>'})
