@@ -4,10 +4,13 @@ that is not UTF-8, a FIFO, a package handed in twice, a package named
 turtlesim, a hostile build that prints 1 GB and an error line full of
 terminal codes, three executables and no launch file (one spins turtle1
 for ever), a workspace with a sibling package that cannot build here, and
-a Python package whose CMakeLists.txt names another project.
+a Python package whose CMakeLists.txt names another project, and a
+package whose launch file starts turtlesim alone, its letter a shell
+script without #! that its course runs with bash.
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -35,6 +38,26 @@ GAZEBO_WORLD = {'package.xml': '<package format="2"><name>gazebo_world</name>'
                                '<buildtool_depend>catkin</buildtool_depend></package>',
                 'CMakeLists.txt': 'cmake_minimum_required(VERSION 3.0.2)\nproject(gazebo_world)\n'
                                   'find_package(catkin REQUIRED COMPONENTS gazebo_ros)\n'}
+# A course whose cadets start turtlesim with roslaunch, then type `bash
+# letters.sh`: a launch file of turtlesim alone, and a shell script of
+# rosservice and rostopic calls, mode 644 and without #!, that draws an L.
+BY_HAND = {'package.xml': '<package format="2"><name>hw3</name><version>0.0.1</version>'
+                          '<description>hw3</description><maintainer email="cadet@example.com">c'
+                          '</maintainer><license>MIT</license>'
+                          '<buildtool_depend>catkin</buildtool_depend></package>',
+           'CMakeLists.txt': 'cmake_minimum_required(VERSION 3.0.2)\nproject(hw3)\n'
+                             'find_package(catkin REQUIRED)\ncatkin_package()\n',
+           'launch/turtle.launch': '<launch><node pkg="turtlesim" type="turtlesim_node" '
+                                   'name="sim"/></launch>\n',
+           'scripts/letters.sh': 'rosservice call /turtle1/set_pen 255 255 255 3 1\n'
+                                 'rosservice call /turtle1/teleport_absolute -- 4 8 -1.5708\n'
+                                 'rosservice call /turtle1/set_pen 255 255 255 3 0\n'
+                                 "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
+                                 "'[3.0, 0.0, 0.0]' '[0.0, 0.0, 0.0]'\n"
+                                 "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
+                                 "'[0.0, 0.0, 0.0]' '[0.0, 0.0, 1.5708]'\n"
+                                 "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
+                                 "'[2.0, 0.0, 0.0]' '[0.0, 0.0, 0.0]'\n"}
 PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
 RUBRIC = os.path.join(HERE, 'rubric.yaml')
 MULLER = os.fsdecode(b'o2_M\xfcller')      # "Müller" as a Latin-1 zip names it
@@ -52,6 +75,8 @@ CONCLUSIONS = {
     'o6_three': ('N', 'pass', 'together, then n_controller.py alone in a fresh world'),
     'o7_siblings': ('L', 'pass', 'every criterion met'),
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
+    'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts no node of hw3: the grader started '
+                               'its executables (letters.sh) instead, as a TA would'),
 }
 
 
@@ -86,6 +111,12 @@ def graded(tmp_path_factory):
         os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
         with open(os.path.join(cls, 'o7_siblings', 'gazebo_world', name), 'w') as f:
             f.write(text)
+    for name, text in BY_HAND.items():
+        path = os.path.join(cls, 'o9_by_hand', 'hw3', name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, 'w') as f:
+            f.write(text)
+        os.chmod(path, 0o644)
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid.startswith('o') and sid[1] not in '26') +
@@ -113,6 +144,15 @@ def test_each_odd_submission_costs_its_own_row_and_says_why(graded):
     for sid, (drawn, verdict, words) in CONCLUSIONS.items():
         assert (rows[sid]['drawn'], rows[sid]['verdict']) == (drawn, verdict), rows[sid]
         assert words in rows[sid]['reason'], rows[sid]
+
+
+def test_a_script_that_ends_with_its_last_move_is_seen_to_stand(graded):
+    """o9's script ends with its last `rostopic pub -1`, and roslaunch with it,
+    while the turtle still moves: the drawing ends, the turtle standing."""
+    with open(os.path.join(graded[0], 'o9_by_hand', 'results.json')) as f:
+        tests = {t['name']: t for t in json.load(f)['tests']}
+    ends = tests['The drawing ends, the turtle standing still']
+    assert ends['status'] == 'passed' and ends['output'].startswith('ended after'), ends
 
 
 def test_what_was_left_out_is_said_in_the_students_log(graded):

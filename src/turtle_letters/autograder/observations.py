@@ -127,14 +127,18 @@ def strokes(lines):
 
 
 def _end(record, first, settle, until):
-    """t of the last move before a pause of `settle` s, or None."""
-    last = first['t']
+    """t of the last move before a pause of `settle` s, once a turtle has
+    been driven, or None. (Teleports before the first drive are set-up: a
+    real class's script teleported with its pen down, cleared, spawned and
+    set pens, one rosservice call at a time, for more than `settle` s before
+    its first rostopic pub.)"""
+    last, driven = first['t'], first['k'] == 'move'
     for e in record:
         if e['t'] <= first['t'] or e['k'] not in MOVES:
             continue
-        if e['t'] - last >= settle:
+        if driven and e['t'] - last >= settle:
             return last
-        last = e['t']
+        last, driven = e['t'], driven or e['k'] == 'move'
     return last if until - last >= settle else None
 
 

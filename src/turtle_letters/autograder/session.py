@@ -346,6 +346,11 @@ def _watch(lab, limits, result):
     since = result.since = seen.looked_for_from(record, started, result.trigger)
     if wait_until(lambda: seen.moved(record, since), limits.start, alive):
         wait_until(lambda: _stood(record, since, limits.settle), limits.drawing, alive)
+        if terminal.process.poll() is not None:
+            # roslaunch ended with its last node (a script of `rostopic pub -1`s): the
+            # turtle's last command plays out, and it is seen to stand
+            wait_until(lambda: _stood(record, since, limits.settle), limits.settle + 1,
+                       lab.watchable)
     else:
         result.still_from = shown
     result.cpu_pct = cpu.share()

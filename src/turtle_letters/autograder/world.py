@@ -395,10 +395,15 @@ class Lab:
 
     def going(self):
         """Whether the run is still worth watching, the one place a run asks:
-        roslaunch runs, the sandbox is within its limits and not stopped,
-        the watcher's events and the simulator's record within theirs and whole."""
-        return self.terminal.process.poll() is None and self.box.going() and \
-            not self.watcher.full and not self.world.full and not self.world.broken()
+        roslaunch runs, and the world may be watched (watchable)."""
+        return self.terminal.process.poll() is None and self.watchable()
+
+    def watchable(self):
+        """Whether the world may still be watched, roslaunch running or not:
+        the sandbox within its limits and not stopped, the watcher's events
+        and the simulator's record within theirs and whole."""
+        return self.box.going() and not self.watcher.full and not self.world.full and \
+            not self.world.broken()
 
     def limit(self):
         """The limits reached, of the sandbox, the watcher and the world, in words, or ''."""

@@ -132,6 +132,16 @@ def test_after_a_reset_between_two_passes_the_canvas_left_is_the_drawing():
     assert d.jump_ink == 0 and d.jumps == 1 and d.wiped == [(3.3 - (1 + TICK), 'reset')]
 
 
+def test_a_set_up_of_teleports_and_calls_longer_than_the_settle_is_no_end():
+    """A real class's script: a teleport with the pen down, /clear, and more
+    service calls for longer than `settle` before its first drive. The
+    drawing ends only once a turtle was driven, and is what the clear left."""
+    record = [jump(1.0, 5.0, 3.0, ink=True), dict(k='clear', t=1.5)] + line(4.0, 3.0, 4.0)
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=12.0)
+    assert d.ended == pytest.approx(record[-1]['t'])
+    assert len(d.strokes) == 1 and d.strokes[0][0] == (3.0, 5.0) and d.jump_ink == 0
+
+
 def test_the_commands_counted_while_the_turtle_drew():
     record = line(1, 5.0, 6.0)
     counts = [dict(k='cmd', t=t, turtle='turtle1', n=10) for t in (0.5, 1.5, 1.9, 4.0)]

@@ -71,8 +71,8 @@ def test_a_bag_replayed_or_a_graph_drawn_is_no_controller(tmp_path):
     assert package.launch == 'launch/turtle.launch'
     assert not submission.starts_own(package)
     assert submission.bare_shell(package.folder) == ['letters.sh']
-    make(tmp_path, {'hw/launch/turtle.launch': sim.replace('</launch>', '<node pkg="hw" '
-                                                           'type="letters.sh" name="l"/></launch>'),
+    own = '<node pkg="hw" type="letters.sh" name="l"/></launch>'
+    make(tmp_path, {'hw/launch/turtle.launch': sim.replace('</launch>', own),
                     'hw/scripts/letters.sh': '#!/bin/bash\nrosservice call /clear\n'})
     assert submission.starts_own(find(str(tmp_path)))
     assert submission.bare_shell(package.folder) == []
