@@ -79,3 +79,32 @@ def rounded(path, radius):
 def placed(points, left, bottom, height, width_scale=1.0):
     """Unit-height points at (left, bottom), `height` m high, widths scaled."""
     return [(left + x * height * width_scale, bottom + y * height) for x, y in points]
+
+
+def driven(commands, x=0.0, y=0.0, heading=0.0, tick=0.016):
+    """The path of a turtle given `commands`, each (linear m/s, angular
+    rad/s, seconds), in turtlesim's ticks from (x, y) facing `heading`: a
+    turn in place lays no point, a turn while moving an arc."""
+    points = [(x, y)]
+    for linear, angular, seconds in commands:
+        for _ in range(int(round(seconds / tick))):
+            heading += angular * tick
+            x, y = x + linear * math.cos(heading) * tick, y + linear * math.sin(heading) * tick
+            if linear:
+                points.append((x, y))
+    return points
+
+
+def turn(angle):
+    """A turn in place by `angle` radians (counter-clockwise), in 1 s."""
+    return 0.0, angle, 1.0
+
+
+def forward(distance):
+    return distance, 0.0, 1.0
+
+
+def arc(radius, angle):
+    """An arc of `radius` through `angle` radians, in 1 s: counter-clockwise
+    for a positive angle, clockwise for a negative one."""
+    return radius * abs(angle), angle, 1.0

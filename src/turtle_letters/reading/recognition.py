@@ -211,7 +211,20 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Readi
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
-    ink = outline(ink) or ink       # an outline is read by its middle line
+    middle = outline(ink)       # an outline is read by its middle line
+    if middle is None:
+        return _read(ink, letters, tilts, finer)
+    reading = _read(middle, letters, tilts, finer)
+    if reading.best is not None and reading.best.fit <= reading.best.readable:
+        return reading      # read, or two letters fit it alike: it says neither
+    # a cadet's loop back to its start (a B's stem and two round bowls) may
+    # band like an outline: where its middle line fits no letter, its strokes are read
+    drawn = _read(ink, letters, tilts, finer)
+    return drawn if drawn.letter is not None else reading
+
+
+def _read(ink, letters, tilts, finer) -> Reading:
+    """read(), of ink read as it is drawn."""
     points = [p for line in ink for p in line]
     ink = thinned(ink, SAMPLE * box(points)[3] / 2)
     fits = _fits(ink, letters)

@@ -13,7 +13,7 @@ from turtle_letters.reading.forms import VARIANTS
 from turtle_letters.reading.rows import apart, read_row
 from turtle_letters.letters.font import FONT
 
-from support.cadet_paths import placed, retraced, rounded
+from support.cadet_paths import arc, driven, forward, placed, retraced, rounded, turn
 from support.glyph_rows import row, touching
 
 SHAPES = [(3.0, 1.0, 5.5, 5.5), (0.5, 1.8, 1.0, 9.0), (2.0, 0.5, 8.0, 1.0)]
@@ -177,6 +177,41 @@ def test_a_j_with_a_bar_across_its_top_and_not_mirrored(tilt):
     reading = read(drawn(barred_j()))
     assert reading.letter == 'J', reading.best
     assert read(drawn(barred_j(hook_left=False))).letter != 'J'
+
+
+def _on_circle(angle, radius, centre=(0.0, 0.0)):
+    """(x, y, heading) of a turtle at `angle` on a circle, about to go round it
+    counter-clockwise."""
+    x, y = centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle)
+    return x, y, angle + math.pi / 2
+
+
+PI = math.pi
+ARCS = {    # letters as a turtle draws them 3 m high, its arcs moving and turning at once
+    'C': driven([arc(1.5, 1.5 * PI)], *_on_circle(PI / 4, 1.5)),
+    'O': driven([arc(1.5, 2 * PI)]),
+    'D': driven([turn(PI / 2), forward(3), turn(-PI / 2), arc(1.5, -PI)]),
+    'B': driven([turn(PI / 2), forward(3), turn(-PI / 2), arc(0.75, -PI), turn(PI),
+                 arc(0.75, -PI)]),      # back to its start: its bowls band like an outline
+    'U': driven([forward(2), arc(1, PI), forward(2)], heading=-PI / 2),
+    'J': driven([forward(2.25), arc(0.75, -PI)], heading=-PI / 2),
+    'S': driven([arc(0.75, 4 * PI / 3), arc(0.75, -4 * PI / 3)],
+                *_on_circle(PI / 6, 0.75, (0.0, 2.25))),
+    'G': driven([arc(1.5, 1.75 * PI), turn(PI / 2), forward(0.9)], *_on_circle(PI / 4, 1.5)),
+}
+
+
+@pytest.mark.parametrize('letter', sorted(ARCS))
+def test_letters_of_arcs_read_at_any_tilt_and_not_mirrored(letter):
+    """C, O, B, D, G, J, S and U as a turtle draws their curves, level and
+    tilted either way to 45 degrees; mirrored, none of the six that differ
+    from their mirror reads as itself."""
+    for tilt, scale in ((0, 1.0), (-45, 0.3), (30, 2.5)):
+        path = turned([[(x * scale, y * scale) for x, y in ARCS[letter]]], tilt, (0, 0))
+        reading = read(path)
+        assert reading.letter == letter, (tilt, reading.best)
+    if letter not in 'OU':
+        assert read([[(-x, y) for x, y in ARCS[letter]]]).letter != letter
 
 
 BLOCKS = {   # block capitals drawn round their edge, 3 high, bands 0.6 wide
