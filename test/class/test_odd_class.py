@@ -75,8 +75,8 @@ CONCLUSIONS = {
     'o6_three': ('N', 'pass', 'together, then n_controller.py alone in a fresh world'),
     'o7_siblings': ('L', 'pass', 'every criterion met'),
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
-    'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts no node of hw3: the grader started '
-                               'its executables (letters.sh) instead, as a TA would'),
+    'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none of '
+                               'hw3: the grader started its executables (letters.sh) instead'),
 }
 
 

@@ -21,7 +21,7 @@ from .failures import talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, Reader
 from .rubric import Limits
 from .submission import (MAX_NODES, Package, bare_shell, copy, made_executable, python_scripts,
-                         scripts, starts_own)
+                         scripts, started_packages)
 from .world import Lab, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
@@ -53,7 +53,7 @@ class Run:
         self.limit = ''         # the sandbox's limit the submission reached, in words
         self.generated = ''     # the executables the grader started, for want of a launch file
         self.executables = []   # ... each by name
-        self.passed_over = None  # the package's launch file, which starts none of them
+        self.passed_over = None  # why the package's launch file was not run, if it was not
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
 
@@ -258,12 +258,15 @@ def _node(executable, i):
 def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
     work, package = box.work, result.package
     names = [only] if only else executables(box, package)
-    if package.launch and (not names or starts_own(package)):
+    started, own = started_packages(package) if package.launch else ([], False)
+    if package.launch and (not names or own):
         launch = [package.name, os.path.basename(package.launch)]
     else:
         launch = [generated_launch(box, package, names)]
-        result.executables, result.passed_over = names, package.launch
-        result.generated = ', '.join(names) or 'none'
+        result.executables, result.generated = names, ', '.join(names) or 'none'
+        result.passed_over = package.launch and (f'{package.launch} starts nodes of '
+                                                 f'{", ".join(started) or "no package"} only, '
+                                                 f'none of {package.name}')
     # Sourced first: the stand-in's workspace goes before the package's own.
     # Unbuilt, the package is found in its source folder, as rosrun finds scripts.
     setup = ('export ROS_PACKAGE_PATH="$0/ws/src:$ROS_PACKAGE_PATH"' if unbuilt else
@@ -285,9 +288,8 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
     _explain(result, lab.terminal, work)
     if result.passed_over and result.launch is not None:
-        result.launch = Step(False, f'{result.passed_over} starts no node of {package.name}: '
-                                    f'the grader started its executables ({result.generated}) '
-                                    f'instead, as a TA would')
+        result.launch = Step(False, f'{result.passed_over}: the grader started its executables '
+                                    f'({result.generated}) instead, as a TA would')
     elif result.generated and result.launch is not None:
         result.launch = Step(False, f'no launch file: the grader started its executables '
                                     f'({result.generated}) as a launch file would')

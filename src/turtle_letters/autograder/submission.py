@@ -139,14 +139,15 @@ def lab_launch(folder, packages=None):
     return min(ranked, key=lambda r: (r[0], r[1] or ''))
 
 
-def starts_own(package: 'Package'):
-    """Whether the package's launch file starts a node of the submission's
-    own packages, not only turtlesim's (a course whose cadets start the
-    simulator with roslaunch and then run their script by hand)."""
+def started_packages(package: 'Package'):
+    """(the packages whose nodes the package's launch file starts, sorted;
+    whether one is the submission's own): a course's cadets may start only
+    turtlesim with roslaunch, and then run their script by hand."""
     folders = [package.folder] + list(package.others)
     packages = {package_name(f): f for f in reversed(folders)}
-    started = nodes(os.path.join(package.folder, package.launch), packages)
-    return any(pkg in packages for pkg, _ in started)
+    started = sorted({pkg for pkg, _ in nodes(os.path.join(package.folder, package.launch),
+                                              packages)})
+    return started, any(pkg in packages for pkg in started)
 
 
 def package_name(folder):

@@ -99,19 +99,26 @@ def test_a_failed_build_says_its_first_error_in_its_own_words():
     assert first_error('nothing useful\n') == 'see log.txt'
 
 
+def handed_in(tmp_path, name, files):
+    """Package `name` of `files` (path: text), each mode 644, as the grader
+    finds and prepares it: (the package, its box, the files made executable)."""
+    folder = tmp_path / 'sub' / name
+    files = {'package.xml': f'<package format="2"><name>{name}</name></package>', **files}
+    for path, text in files.items():
+        (folder / path).parent.mkdir(parents=True, exist_ok=True)
+        (folder / path).write_text(text)
+        os.chmod(folder / path, 0o644)
+    package = find(str(tmp_path / 'sub'))
+    made = prepare(package, str(tmp_path / 'work'))
+    return package, SimpleNamespace(work=str(tmp_path / 'work')), made
+
+
 def test_scripts_handed_in_without_the_execute_bit_are_started_for_want_of_a_launch_file(tmp_path):
     """A real class's package: no launch file, its one script mode 644.
     The copy's script is made executable, and that is the one started."""
-    folder = tmp_path / 'sub' / 'lab'
-    (folder / 'scripts').mkdir(parents=True)
-    (folder / 'package.xml').write_text('<package format="2"><name>lab</name></package>')
-    (folder / 'scripts' / 'draw_m.py').write_text('#!/usr/bin/env python3\n')
-    os.chmod(folder / 'scripts' / 'draw_m.py', 0o644)
-    work = tmp_path / 'work'
-    package = find(str(tmp_path / 'sub'))
-    assert prepare(package, str(work)) == ['scripts/draw_m.py']
-    box = SimpleNamespace(work=str(work))
-    assert executables(box, package) == ['draw_m.py']
+    package, box, made = handed_in(tmp_path, 'lab', {'scripts/draw_m.py':
+                                                     '#!/usr/bin/env python3\n'})
+    assert made == ['scripts/draw_m.py'] and executables(box, package) == ['draw_m.py']
     assert 'type="draw_m.py"' in open(generated_launch(box, package, ['draw_m.py'])).read()
 
 
@@ -120,19 +127,11 @@ def test_a_shell_script_without_its_bang_is_started_with_bash(tmp_path):
     letters are a shell script of rosservice and rostopic calls, mode 644
     and without #!, which its cadets ran with bash. The grader's launch
     file starts the script with bash."""
-    folder = tmp_path / 'sub' / 'hw'
-    (folder / 'scripts').mkdir(parents=True)
-    (folder / 'launch').mkdir()
-    (folder / 'package.xml').write_text('<package format="2"><name>hw</name></package>')
-    (folder / 'launch' / 'turtle.launch').write_text(
-        '<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/></launch>')
-    (folder / 'scripts' / 'letters.sh').write_text('rosservice call /clear\n')
-    os.chmod(folder / 'scripts' / 'letters.sh', 0o644)
-    work = tmp_path / 'work'
-    package = find(str(tmp_path / 'sub'))
-    assert prepare(package, str(work)) == ['scripts/letters.sh']
-    box = SimpleNamespace(work=str(work))
-    assert executables(box, package) == ['letters.sh']
+    package, box, made = handed_in(tmp_path, 'hw', {
+        'launch/turtle.launch': '<launch><node pkg="turtlesim" type="turtlesim_node" '
+                                'name="s"/></launch>',
+        'scripts/letters.sh': 'rosservice call /clear\n'})
+    assert made == ['scripts/letters.sh'] and executables(box, package) == ['letters.sh']
     text = open(generated_launch(box, package, ['letters.sh'])).read()
     assert 'type="letters.sh" name="letters0" output="screen" launch-prefix="bash"/>' in text
 

@@ -69,12 +69,12 @@ def test_a_bag_replayed_or_a_graph_drawn_is_no_controller(tmp_path):
                     'hw/scripts/letters.sh': 'rosservice call /clear\n'})
     package = find(str(tmp_path))
     assert package.launch == 'launch/turtle.launch'
-    assert not submission.starts_own(package)
+    assert submission.started_packages(package) == (['turtlesim'], False)
     assert submission.bare_shell(package.folder) == ['letters.sh']
     own = '<node pkg="hw" type="letters.sh" name="l"/></launch>'
     make(tmp_path, {'hw/launch/turtle.launch': sim.replace('</launch>', own),
                     'hw/scripts/letters.sh': '#!/bin/bash\nrosservice call /clear\n'})
-    assert submission.starts_own(find(str(tmp_path)))
+    assert submission.started_packages(find(str(tmp_path))) == (['hw', 'turtlesim'], True)
     assert submission.bare_shell(package.folder) == []
 
 
