@@ -1,6 +1,7 @@
 """The forms each letter of A-Z is read in: the builtin font's glyph, the
 ways cadets draw it with rotate and move, the Hershey families a cadet may
-draw in, and block letters by their middle lines; each sampled once in its
+draw in (and one's lowercase letters: a name written 'Jo'), and block
+letters by their middle lines; each sampled once in its
 own box (Templates), for recognition.py to stretch onto ink. No ROS here."""
 import string
 from typing import List, NamedTuple, Tuple
@@ -55,6 +56,11 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
 FAMILIES = ('futural', 'rowmand', 'rowmant', 'timesr', 'timesi')
 FLOURISHED = ('scripts', 'scriptc', 'cursive', 'gothiceng', 'gothicger', 'gothicita')
 FLOURISHED_READABLE = 0.1
+# A name's later letters written small, as names are ('Jo', 'Ca': nine of a
+# real class of sixteen): futural's lowercase, each a form of its capital (a
+# TA reading initials reads an a as an A). The rest are their capital made
+# small (c o s v w x z) or a stroke, an I's (i j l).
+SMALL_FAMILY, SMALL_LETTERS = 'futural', 'abdefghkmnpqrtuy'
 # Block letters, read by their middle lines: Liberation's (the recognition
 # benchmark draws DejaVu's, so its figure for outlines is of fonts unseen).
 BLOCK_FONTS = (('/usr/share/fonts/truetype/liberation/LiberationSans-Bold.ttf', READABLE),
@@ -73,6 +79,8 @@ def _candidates():
             continue
         readable = FLOURISHED_READABLE if family in FLOURISHED else READABLE
         found += [(c, font.glyph(c).strokes, readable) for c in string.ascii_uppercase]
+        if family == SMALL_FAMILY:
+            found += [(c.upper(), font.glyph(c).strokes, READABLE) for c in SMALL_LETTERS]
     return found + _block_letters()
 
 

@@ -165,7 +165,7 @@ def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
     moved a real MF's cut off its M.)"""
     points = [p for line in ink for p in line]
     x, y, w, h = box(points)
-    if w > WIDEST * h:
+    if h <= 0 or w > WIDEST * h:      # a dash, or a dot (an outline's middle may be one)
         return {}
     drawn = (sampled([line for line in ink if line], CELL * h / 2) - (x, y)) / h
     fitting = Fitting(drawn, w / h, letters)

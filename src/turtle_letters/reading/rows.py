@@ -25,7 +25,8 @@ from .recognition import MOST_TILT, SAMPLE, Reading, read
 
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
-SHORT = 0.5         # a letter of a row less high than this share of the row is unfinished, no letter
+SHORT = 0.5         # a letter of a row less high than this share of the row reads only cleanly
+SMALL = 0.25        # ... less high than this share: unfinished, no letter
 NEAR_TILTS = (-5, 5)    # degrees a part is tried off level when finding where to cut
 TIE = 0.01          # cuts whose fits differ by less fit as well
 BARE = 0.2          # a form narrower than this share of its height is a bare stroke
@@ -93,8 +94,11 @@ class Row:
         """The reading of `part`, a letter of this row, as one of `letters`,
         its fit to the letter `exact` exact (read() gives another letter's
         than the best no better than the best's only; OCR may credit the
-        letter expected): none where it stands less than SHORT of the
-        row's height (its best fit kept, for the report)."""
+        letter expected): none where it stands less than SMALL of the
+        row's height, nor less than SHORT unless it fits within CLEAN (its
+        best fit kept, for the report). (A name's later letters written
+        small, 'Jo' or 'Ri', are its letters; the end of a curve beside a
+        whole letter is no I.)"""
         key = (tuple(tuple(tuple(p) for p in line) for line in part), letters, exact)
         if key not in self._readings:
             reading = read(part, letters)
@@ -103,7 +107,8 @@ class Row:
             if alone:
                 fits = {**fits, exact: alone}
             letter = reading.letter
-            if part and box([p for line in part for p in line])[3] < SHORT * self.height:
+            height = box([p for line in part for p in line])[3] / self.height if part else 1
+            if height < SMALL or (height < SHORT and reading.best.fit > CLEAN):
                 letter = None
             self._readings[key] = Reading(letter, reading.best, fits)
         return self._readings[key]
@@ -430,13 +435,31 @@ def _as_expected(row, letter, alone, shared):
 
 def without_specks(ink):
     """`ink` less its specks: ink set apart (apart()) whose extent is under
-    SPECK of all the ink's (a turtle spawned with its pen down, a nudge)."""
+    SPECK of all the ink's (a turtle spawned with its pen down, a nudge),
+    and dots (an i's: _dot)."""
     points = [p for line in ink for p in line]
     if len(points) < 2:
         return ink
     _, _, w, h = box(points)
+    speck = SPECK * max(w, h)
+    kept = [line for group in apart(ink) if _extent(group) >= speck for line in group]
+    return [line for line in kept if not _dot(line, kept, speck)]
 
-    def extent(group):
-        _, _, gw, gh = box([p for line in group for p in line])
-        return max(gw, gh)
-    return [line for group in apart(ink) if extent(group) >= SPECK * max(w, h) for line in group]
+
+def _extent(lines):
+    _, _, w, h = box([p for line in lines for p in line])
+    return max(w, h)
+
+
+def _dot(line, ink, speck):
+    """Whether `line` of `ink` is a dot: less than `speck` across, and
+    farther from all other ink than that (an i's dot above its stem; a
+    dash of a dashed line lies nearer the next)."""
+    if len(line) < 1 or _extent([line]) >= speck:
+        return False
+    others = numpy.array([p for other in ink if other is not line for p in other])
+    if not len(others):
+        return False
+    dot = numpy.asarray(line, dtype=float).reshape(-1, 2)[::max(1, len(line) // 8)]   # bounded
+    nearest = numpy.hypot(*(others[:, None, :] - dot[None, :, :]).transpose(2, 0, 1)).min()
+    return nearest > max(_extent([line]), speck / 2)

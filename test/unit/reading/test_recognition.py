@@ -336,6 +336,60 @@ def test_an_unfinished_letter_and_a_speck_in_a_row_are_no_letters():
     assert [r.letter for r in readings[1:]] == [None] * (len(readings) - 1), readings
 
 
+def _small(letter, share):
+    """A turtle's `letter` written small after a capital K, `share` of its
+    height: an o, a circle driven round, or an i, a stroke (its dot a speck)."""
+    k = row('K')
+    left, height = max(x for stroke in k for x, _ in stroke) + 0.4, 2.0 * share
+    if letter == 'O':
+        return k + [driven([arc(height / 2, 0.97 * math.tau)], left + height / 2, 3.0)]
+    return k + [[(left, 3.0), (left, 3.0 + height)], [(left, 3.3 + height), (left, 3.31 + height)]]
+
+
+@pytest.mark.parametrize('letter', ['O', 'I'])
+@pytest.mark.parametrize('share', [0.3, 0.45])
+def test_a_names_later_letter_written_small_is_its_letter(letter, share):
+    """'Ko', 'Ki': a name's letters after the first written small, as
+    names are (nine of a real class of sixteen did): the small letter is
+    read, as a TA reads it. Under a quarter of the row's height it is no
+    letter, like a curve's end."""
+    assert [r.letter for r in read_row(_small(letter, share), 'K' + letter)] == ['K', letter]
+    assert read_row(_small(letter, 0.2), 'K' + letter)[1].letter is None
+
+
+def _lowercase(letter, left, height):
+    """A turtle's small a (a round bowl, a stem on its right) or n (a stem,
+    and an arch from its top down to the baseline), `height` high."""
+    r = height / 2
+    if letter == 'A':
+        return [driven([arc(r, 0.97 * math.tau)], left + r, 3.0),
+                [(left + height, 3.0 + height), (left + height, 3.0)]]
+    arch = [(left + r + r * math.cos(math.pi * i / 20), 3.0 + r + r * math.sin(math.pi * i / 20))
+            for i in range(21)]
+    return [[(left, 3.0), (left, 3.0 + height)] + arch[::-1] + [(left + height, 3.0)]]
+
+
+@pytest.mark.parametrize('first, small, other', [('C', 'A', 'O'), ('K', 'N', 'U')])
+@pytest.mark.parametrize('share', [0.5, 0.7])
+def test_a_small_a_and_n_are_forms_of_their_capitals_and_of_no_other(first, small, other,
+                                                                       share):
+    """'Ca', 'Kn': lowercase letters are forms of their capitals (a TA
+    reading initials reads an a as an A); read against another text, an
+    a is still an A, no O, and an n no U upside down."""
+    ink = row(first)
+    ink += _lowercase(small, max(x for stroke in ink for x, _ in stroke) + 0.5, 2.0 * share)
+    assert [r.letter for r in read_row(ink, first + small)] == [first, small]
+    assert read_row(ink, first + other)[1].letter == small
+
+
+def test_a_loop_whose_middle_line_is_one_point_reads_as_no_letter():
+    """A small circle drawn into a K's arms: a part of it cut off the row
+    is a ring whose middle line is one point. It reads as no letter (the
+    reader once failed on it, dividing by its height)."""
+    ring = driven([arc(0.25, 0.97 * math.tau)], 2.6, 3.0)
+    assert len(read_row(row('K') + [ring], 'KO')) == 2
+
+
 def curve(start, end, centre=(3.0, 9.0), radii=(1.4, 1.0)):
     """An ellipse's arc, counter-clockwise from `start` to `end` degrees."""
     return [(centre[0] + radii[0] * math.cos(math.radians(start + (end - start) * i / 40)),
