@@ -425,9 +425,13 @@ def _hoped(row, letters, expected):
 def _as_expected(row, letter, alone, shared):
     """The reading of a letter cut: `alone`, or with the strokes it shares
     where only so it reads as `letter` (read among all 26 only where it
-    reads so as `letter` alone)."""
+    reads so as `letter` alone), and its own ink stands SMALL of the row
+    or more: less is a neighbour's stroke, not a letter lent one (one
+    stroke, the first leg of a U begun, cut three ways for USI, read as
+    the I beside a sliver)."""
     first = row.reading(alone, exact=letter)
-    if first.letter == letter or row.reading(shared, letter).letter != letter:
+    own = box([p for line in alone for p in line])[3] / row.height if alone else 0
+    if first.letter == letter or own < SMALL or row.reading(shared, letter).letter != letter:
         return first
     second = row.reading(shared, exact=letter)
     return second if second.letter == letter else first

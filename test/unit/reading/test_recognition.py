@@ -390,6 +390,19 @@ def test_a_loop_whose_middle_line_is_one_point_reads_as_no_letter():
     assert len(read_row(row('K') + [ring], 'KO')) == 2
 
 
+@pytest.mark.parametrize('expected, credited', [('USI', 0), ('SI', 0), ('IS', 1)])
+def test_one_stroke_is_one_letter_however_many_are_expected(expected, credited):
+    """A canvas holding one stroke, a U's first leg where USI was being
+    drawn (a real class's, cleared at the end of its run), a tiny hook
+    at its top: cut for three letters, the hook's part lent the whole
+    stroke read as the I of USI. One stroke is one letter: an I, credited
+    only in its place."""
+    line = [(1.02, 8.9), (1.0, 8.85)] + [(1.0, 8.8 - i * 0.05) for i in range(121)]
+    readings = read_row([line], expected)
+    assert sum(r.letter == e for r, e in zip(readings, expected)) == credited, readings
+    assert [r.letter for r in readings if r.letter] == ['I']
+
+
 def curve(start, end, centre=(3.0, 9.0), radii=(1.4, 1.0)):
     """An ellipse's arc, counter-clockwise from `start` to `end` degrees."""
     return [(centre[0] + radii[0] * math.cos(math.radians(start + (end - start) * i / 40)),
