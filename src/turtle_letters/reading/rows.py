@@ -77,6 +77,10 @@ class Row:
         reach = SAMPLE * self.height
         return [(self.between(lo, hi), self.between(lo - reach, hi + reach)) for lo, hi in edges]
 
+    def share(self, part):
+        """How high `part` stands, as a share of the row's height (0: no ink)."""
+        return box([p for line in part for p in line])[3] / self.height if part else 0.0
+
     def between(self, lo, hi):
         """The ink between x `lo` (not included) and `hi`: each line's runs of points there."""
         parts = []
@@ -107,7 +111,7 @@ class Row:
             if alone:
                 fits = {**fits, exact: alone}
             letter = reading.letter
-            height = box([p for line in part for p in line])[3] / self.height if part else 1
+            height = self.share(part)
             if height < SMALL or (height < SHORT and reading.best.fit > CLEAN):
                 letter = None
             self._readings[key] = Reading(letter, reading.best, fits)
@@ -306,10 +310,10 @@ def read_row(ink, expected='') -> List[Reading]:
     a letter cut is its expected letter if it reads so alone or with the
     strokes it shares. A row that does not read so level is read turned
     back by its slope (levels). The cuts only find the letters; a
-    reading of all the letters says what each is. Specks are no part of
-    it (without_specks), and a letter of a row less than SHORT of the
-    row's height reads as no letter (unfinished: a quarter of an S's curve
-    beside a whole U is no I)."""
+    reading of all the letters says what each is. Specks and dots are no
+    part of it (without_specks), and a letter of a row well under its
+    height reads only as Row.reading says (a small o after a J does; a
+    quarter of an S's curve beside a whole U is no I)."""
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
     if count <= 1:
@@ -430,8 +434,8 @@ def _as_expected(row, letter, alone, shared):
     stroke, the first leg of a U begun, cut three ways for USI, read as
     the I beside a sliver)."""
     first = row.reading(alone, exact=letter)
-    own = box([p for line in alone for p in line])[3] / row.height if alone else 0
-    if first.letter == letter or own < SMALL or row.reading(shared, letter).letter != letter:
+    if first.letter == letter or row.share(alone) < SMALL or \
+            row.reading(shared, letter).letter != letter:
         return first
     second = row.reading(shared, exact=letter)
     return second if second.letter == letter else first
@@ -457,13 +461,14 @@ def _extent(lines):
 
 def _dot(line, ink, speck):
     """Whether `line` of `ink` is a dot: less than `speck` across, and
-    farther from all other ink than that (an i's dot above its stem; a
-    dash of a dashed line lies nearer the next)."""
-    if len(line) < 1 or _extent([line]) >= speck:
+    farther from all other ink than its own size and half a speck (an i's
+    dot above its stem; a dash of a dashed line lies nearer the next)."""
+    size = _extent([line]) if line else speck
+    if size >= speck:
         return False
     others = numpy.array([p for other in ink if other is not line for p in other])
     if not len(others):
         return False
     dot = numpy.asarray(line, dtype=float).reshape(-1, 2)[::max(1, len(line) // 8)]   # bounded
     nearest = numpy.hypot(*(others[:, None, :] - dot[None, :, :]).transpose(2, 0, 1)).min()
-    return nearest > max(_extent([line]), speck / 2)
+    return nearest > max(size, speck / 2)
