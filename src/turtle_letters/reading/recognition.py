@@ -33,6 +33,7 @@ MOST_TILT = max(TILTS) + sum(FINER)     # degrees off level a letter is read at,
 SAMPLE = 0.02       # share of the height between compared points
 HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
 AMBIGUOUS = 0.005   # another letter fitting within this of the best: the two cannot be told apart
+WITNESSES = 4       # the ink cells farthest from the last few candidates fitted, kept
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
 
 
@@ -104,13 +105,19 @@ class Fitting:
         width = numpy.clip(aspect, own / MAX_STRETCH, own * MAX_STRETCH)
         self.across = numpy.divide(width, own, out=numpy.zeros_like(own), where=own > 0)
         self.left = (aspect - width) / 2
-        self.lo, self.hi = min(0.0, (aspect - width.max()) / 2), max(aspect, (aspect + width.max()) / 2)
+        # the grid starts on a whole cell: a letter's fit is the same whichever letters are asked
+        self.lo = math.floor(min(0.0, (aspect - width.max()) / 2) / CELL) * CELL
+        self.hi = max(aspect, (aspect + width.max()) / 2)
         self.ink = Distances(drawn[:, 0], drawn[:, 1], self.lo, self.hi)
+        self.witnesses = []     # indices of inked, fit()'s
 
     @functools.cached_property
     def inked(self):
-        """The ink's cells, for fit(): the few candidates fitted exactly need them."""
-        return self.ink.cells(self.drawn[:, 0], self.drawn[:, 1])
+        """The ink's cells, each once, for fit(): the few candidates fitted exactly need them."""
+        width = self.ink.grid.shape[1]
+        cells = numpy.unique(self.ink.rows(self.drawn[:, 1]) * width +
+                             self.ink.cols(self.drawn[:, 0]))
+        return numpy.column_stack((cells // width, cells % width)).astype(float)
 
     @property
     def chosen(self):
@@ -118,10 +125,12 @@ class Fitting:
 
     def _on_ink(self, points, slot):
         """How far from the ink each of the choice's `points` (indices or a
-        slice) lies, placed: each of candidate `slot` (its index, or one a point)."""
+        slice) lies, placed: each of candidate `slot` (its index, or one a point).
+        The grid holds every candidate placed (from 0 to 1 high, from lo to hi
+        across, a cell to spare each side): no index is put within it."""
         xs = self.left[slot] + self.choice.xs[points] * self.across[slot]
-        rows = _within(self.choice.rows[points], self.ink.grid.shape[0])
-        return self.ink.grid[rows, self.ink.cols(xs)]
+        cols = numpy.rint((xs - self.lo) / CELL).astype(int) + 1
+        return self.ink.grid[self.choice.rows[points], cols]
 
     def bounds(self):
         """Each candidate's farthest point from the ink, of its sparse ones: below its bound."""
@@ -134,14 +143,27 @@ class Fitting:
         return float(self._on_ink(slice(self.choice.starts[i], self.choice.starts[i + 1]),
                                   i).max())
 
-    def fit(self, i, bound):
-        """Candidate i's fit: the worse of its bound and how far the ink strays from it,
-        cell to nearest cell on the ink's grid (scipy's directed Hausdorff distance: the
-        figure a distance transform of the candidate gave, in about two thirds of its time)."""
+    def fit(self, i, bound, below=math.inf):
+        """(candidate i's fit, True): the worse of its bound and how far the ink strays
+        from it, cell to nearest cell on the ink's grid (scipy's directed Hausdorff
+        distance: the figure a distance transform of the candidate gave, in about two
+        thirds of its time). Or (a bound, False) where the ink that strayed farthest
+        from earlier candidates (WITNESSES of it) strays `below` or more from this one:
+        its fit is no less (three in four exact fits of a row were no better than
+        the fits they had to beat)."""
         part = slice(self.choice.starts[i], self.choice.starts[i + 1])
         xs = self.left[i] + self.choice.xs[part] * self.across[i]
         shape = self.ink.cells(xs, self.choice.ys[part])
-        return max(bound, float(directed_hausdorff(self.inked, shape)[0]) * CELL)
+        if self.witnesses:
+            far = self.inked[self.witnesses]
+            near = numpy.sqrt(((far[:, None, :] - shape[None, :, :]) ** 2).sum(axis=2))
+            strays = max(bound, float(near.min(axis=1).max()) * CELL)
+            if strays >= below:
+                return strays, False
+        distance, worst, _ = directed_hausdorff(self.inked, shape)
+        if worst not in self.witnesses:
+            self.witnesses = [int(worst)] + self.witnesses[:WITNESSES - 1]
+        return max(bound, float(distance) * CELL), True
 
 
 class _Found(NamedTuple):
@@ -153,13 +175,15 @@ class _Found(NamedTuple):
     exact: bool = True  # False: a bound, the fit no less
 
 
-def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
-    """Each letter's best fit to `ink`, as it lies: exact for the REFINED
+def _fits(ink, letters, beat=None, refined=REFINED) -> Dict[str, _Found]:
+    """Each letter's best fit to `ink`, as it lies: exact for the `refined`
     best-fitting letters, and each other's no better than theirs. A
     candidate is fitted exactly only where its bound is under HOPELESS
-    and below the REFINED-th best letter's fit so far, here and in `beat`
+    and below the `refined`-th best letter's fit so far, here and in `beat`
     (the ink at other tilts); a letter none of whose candidates was has
-    its least bound, marked so. (A bound taken on every SPARSE-th point
+    its least bound, or a fit's bound (Fitting.fit), marked so; with
+    `refined` 1, letters none of whose candidates may fit best are left
+    out. (A bound taken on every SPARSE-th point
     only skips candidates; a bound kept is taken on all: a row's cuts
     compare the bounds of parts that fit no letter, and the sparse ones
     moved a real MF's cut off its M.)"""
@@ -173,18 +197,24 @@ def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
     candidates = templates().candidates
     fits: Dict[str, _Found] = {}
     exact = {c: f.fit for c, f in (beat or {}).items() if f.exact}
-    limit = _limit(exact)
+    limit = _limit(exact, refined)
     for i in numpy.argsort(bounds):     # sparse bounds: each no more than its bound
+        if refined == 1 and bounds[i] >= limit:
+            break       # no later candidate fits better than the best: only it is asked for
         letter = candidates[fitting.chosen[i]][0]
         best = fits[letter].fit if letter in fits else math.inf
         if bounds[i] >= best or (letter in fits and fits[letter].exact and bounds[i] >= limit):
             continue
         bound = fitting.bound(i)
         if bound < limit and bound <= HOPELESS and bound < best:
-            found = _Found(fitting.fit(i, bound), int(fitting.chosen[i]), (x, y, w, h))
-            if found.fit < exact.get(letter, math.inf):
+            fitted = letter in fits and fits[letter].exact
+            fit, exactly = fitting.fit(i, bound, min(limit, best if fitted else math.inf))
+            if not exactly and fitted:
+                continue
+            found = _Found(fit, int(fitting.chosen[i]), (x, y, w, h), exact=exactly)
+            if exactly and fit < exact.get(letter, math.inf):
                 exact[letter] = found.fit
-                limit = _limit(exact)
+                limit = _limit(exact, refined)
         elif letter not in fits or not fits[letter].exact:
             found = _Found(bound, int(fitting.chosen[i]), (x, y, w, h), exact=False)
         else:
@@ -194,45 +224,48 @@ def _fits(ink, letters, beat=None) -> Dict[str, _Found]:
     return fits
 
 
-def _limit(exact):
-    """The REFINED-th best of some letters' fits: a candidate bounded above it is no better."""
-    best = sorted(exact.values())[:REFINED]
-    return best[-1] if len(best) == REFINED else math.inf
+def _limit(exact, refined):
+    """The `refined`-th best of some letters' fits: a candidate bounded above it is no better."""
+    best = sorted(exact.values())[:refined]
+    return best[-1] if len(best) == refined else math.inf
 
 
-def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER) -> Reading:
+def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
+         refined=REFINED) -> Reading:
     """The letter of `letters` that `ink` (lines of (x, y), m) draws, best
     fit first; ink that fits no letter well level is tried turned back by
     each of TILTS, then by `finer` steps around the tilts that fit best
     (a wide letter 5 degrees off strays a tenth of its height); its fits
-    keep the tilt (their strokes turned with it). The best fit is exact;
-    another letter's is no better than it (_fits): read it alone for its
-    own (rows.Row.reading does, for the letter expected)."""
+    keep the tilt (their strokes turned with it). The best fit is exact,
+    and so are the next `refined` - 1 letters'; another letter's is no
+    better than theirs (_fits): read it alone for its own (rows.Row.reading
+    does, for the letter expected). With `refined` 1, letters that cannot
+    fit best are left out: a row's cuts ask only how well a part fits."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
     middle = outline(ink)       # an outline is read by its middle line
     if middle is None:
-        return _read(ink, letters, tilts, finer)
-    reading = _read(middle, letters, tilts, finer)
+        return _read(ink, letters, tilts, finer, refined)
+    reading = _read(middle, letters, tilts, finer, refined)
     if reading.best is not None and reading.best.fit <= reading.best.readable:
         return reading      # read, or two letters fit it alike: it says neither
     # a cadet's loop back to its start (a B's stem and two round bowls) may
     # band like an outline: where its middle line fits no letter, its strokes are read
-    drawn = _read(ink, letters, tilts, finer)
+    drawn = _read(ink, letters, tilts, finer, refined)
     return drawn if drawn.letter is not None else reading
 
 
-def _read(ink, letters, tilts, finer) -> Reading:
+def _read(ink, letters, tilts, finer, refined) -> Reading:
     """read(), of ink read as it is drawn."""
     points = [p for line in ink for p in line]
     ink = thinned(ink, SAMPLE * box(points)[3] / 2)
-    fits = _fits(ink, letters)
+    fits = _fits(ink, letters, refined=refined)
     x, y, w, h = box(points)
     centre = (x + w / 2, y + h / 2)
     if min((f.fit for f in fits.values()), default=math.inf) > LEVEL:
         done = {0.0} | set(tilts)
-        _tried(ink, letters, fits, tilts, centre)
+        _tried(ink, letters, fits, tilts, centre, refined)
         for step in finer:
             if min((f.fit for f in fits.values()), default=math.inf) <= LEVEL:
                 break
@@ -240,7 +273,7 @@ def _read(ink, letters, tilts, finer) -> Reading:
                     if f.fit <= 2 * _readable(f)}
             more = sorted({t + d for t in near for d in (-step, step)} - done)
             done |= set(more)
-            _tried(ink, letters, fits, more, centre)
+            _tried(ink, letters, fits, more, centre, refined)
     placed_fits = {letter: _placed(letter, f, centre) for letter, f in fits.items()}
     best = min(placed_fits.values(), key=lambda f: f.fit, default=None)
     letter = best.letter if best is not None and best.fit <= best.readable else None
@@ -261,12 +294,12 @@ def _placed(letter, found, centre):
     return Fit(letter, found.fit, strokes, found.tilt, _readable(found))
 
 
-def _tried(ink, letters, fits, tilts, centre):
+def _tried(ink, letters, fits, tilts, centre, refined):
     """`fits` bettered by the ink turned back by each of `tilts`, about `centre`."""
     for tilt in tilts:
         level = turned(ink, -tilt, centre)
         if box([p for line in level for p in line])[3] <= 0:
             continue
-        for letter, found in _fits(level, letters, fits).items():
+        for letter, found in _fits(level, letters, fits, refined).items():
             if letter not in fits or found.fit < fits[letter].fit:
                 fits[letter] = found._replace(tilt=tilt)

@@ -64,7 +64,7 @@ class Row:
         if key not in self._fits:
             part = self.between(left, right)
             letters = string.ascii_uppercase if letter == ANY else letter
-            reading = read(part, letters, NEAR_TILTS, ()) if part else None
+            reading = read(part, letters, NEAR_TILTS, (), refined=1) if part else None
             self._fits[key] = reading.best.fit if reading and reading.best else math.inf
         return self._fits[key]
 
@@ -266,8 +266,11 @@ def levels(ink, count=2):
         return turned(ink, -tilt, centre) if tilt else ink
     slope, *rival = row_slopes(ink)
     if rival:
-        seen, seen_rival = _seen(level(slope), count), _seen(level(rival[0]), count)
-        doubted = seen_rival == seen > 0 and min(abs(slope), abs(rival[0])) >= FAR_OFF
+        far_off = min(abs(slope), abs(rival[0])) >= FAR_OFF
+        seen = _seen(level(slope), count)
+        # where the slope reads all `count`, the rival cannot read more; a tie counts far off
+        seen_rival = _seen(level(rival[0]), count) if seen < count or far_off else 0
+        doubted = seen_rival == seen > 0 and far_off
         slope = 0 if doubted else rival[0] if seen_rival > seen else slope
     return [(tilt, centre, level(tilt)) for tilt in ([slope] if slope else []) + [0]]
 

@@ -9,7 +9,7 @@ import pytest
 
 from turtle_letters.reading.ink import MAX_POINTS, outline, thinned, turned
 from turtle_letters.reading.recognition import read
-from turtle_letters.reading.forms import VARIANTS
+from turtle_letters.reading.forms import READABLE, VARIANTS
 from turtle_letters.reading.rows import apart, read_row
 from turtle_letters.letters.font import FONT
 
@@ -294,6 +294,24 @@ def test_hershey_families_a_cadet_may_draw_in_read_as_themselves(family):
     for letter in 'AGKMRW':
         ink = [[(1 + x * 2, 3 + y * 2) for x, y in s] for s in font.glyph(letter).strokes]
         assert read(ink).letter == letter, (family, letter, read(ink).best)
+
+
+@pytest.mark.parametrize('family, text', [('rowmant', 'E'), ('gothiceng', 'K'), ('gothiceng', 'R'),
+                                          ('gothiceng', 'P')])
+def test_the_best_letters_fits_are_exact_whatever_candidates_are_skipped(family, text):
+    """A reading skips candidates that cannot beat the best letters so far;
+    each letter read alone is fitted to all its candidates that may read.
+    (Ink that three letters fit within READABLE: their fits are exact.)"""
+    ink = touching(family, text)
+    alone = {c: read(ink, c, (), ()).best.fit for c in string.ascii_uppercase}
+    ranked = sorted(alone, key=alone.get)
+    assert alone[ranked[2]] <= READABLE
+    among_all = read(ink, tilts=(), finer=())
+    assert among_all.best.letter == ranked[0] == text
+    for letter in ranked[:3]:       # recognition.REFINED
+        assert among_all.fits[letter].fit == pytest.approx(alone[letter], abs=1e-12), letter
+    best_only = read(ink, tilts=(), finer=(), refined=1)
+    assert best_only.best.fit == pytest.approx(alone[text], abs=1e-12)
 
 
 @pytest.mark.parametrize('tilt', [-40, 25, 45])
