@@ -400,11 +400,13 @@ def _read_letters(row, expected, floor=-1, back=lambda reading: reading):
 def _confirmed(row, expected, readings, ahead):
     """`readings` of a row cut for `expected` that did not all read so,
     each letter read in place kept only where it reads CLEAN and the row
-    cut blind at its place reads it there too. A cut sought for a letter
-    that is not there finds ink that fits it: a sliver of an O as an I, a
-    gothic C's half as a B. (Rows 2000 to 2499 of the recognition
-    benchmark, graded against other initials: 38 such letters credited;
-    kept so, 5.)"""
+    cut blind reads it there too, cut with any letter at its place and with
+    any letter at every place, as a TA reads a row not knowing the roster.
+    A cut sought for a letter that is not there finds ink that fits it: a
+    sliver of an O as an I, a gothic C's half as a B. (Rows 2000 to 2499 of
+    the recognition benchmark, graded against other initials: 38 such
+    letters credited; kept so, 5. A touching UEI cut for ELB read its E's
+    bars and the I as a B where only the B's place was cut blind.)"""
     kept = []
     for k, (reading, letter) in enumerate(zip(readings, expected)):
         doubted = reading.letter == letter and (
@@ -415,10 +417,13 @@ def _confirmed(row, expected, readings, ahead):
 
 def _read_blind(row, expected, k, ahead):
     """Whether letter k of `expected` reads in its place where the row is
-    cut with ANY letter there."""
-    blind = expected[:k] + ANY + expected[k + 1:]
-    alone, shared = row.letters(cut(row, blind, ahead))[k]
-    return _as_expected(row, expected[k], alone, shared).letter == expected[k]
+    cut with ANY letter there, and where it is cut with ANY letter at every
+    place (each alone let a wrong letter through that the other stopped)."""
+    for blind in (expected[:k] + ANY + expected[k + 1:], ANY * len(expected)):
+        alone, shared = row.letters(cut(row, blind, ahead))[k]
+        if _as_expected(row, expected[k], alone, shared).letter != expected[k]:
+            return False
+    return True
 
 
 def _hoped(row, letters, expected):
