@@ -268,7 +268,8 @@ def levels(ink, count=2):
     if rival:
         far_off = min(abs(slope), abs(rival[0])) >= FAR_OFF
         seen = _seen(level(slope), count)
-        # where the slope reads all `count`, the rival cannot read more; a tie counts far off
+        # the rival is read only where it may change the way: the slope reads fewer than
+        # `count`, or both lie far off, where a tie is a doubt
         seen_rival = _seen(level(rival[0]), count) if seen < count or far_off else 0
         doubted = seen_rival == seen > 0 and far_off
         slope = 0 if doubted else rival[0] if seen_rival > seen else slope
