@@ -203,11 +203,11 @@ def _fits(ink, letters, beat=None, refined=REFINED) -> Dict[str, _Found]:
             break       # no later candidate fits better than the best: only it is asked for
         letter = candidates[fitting.chosen[i]][0]
         best = fits[letter].fit if letter in fits else math.inf
-        if bounds[i] >= best or (letter in fits and fits[letter].exact and bounds[i] >= limit):
+        fitted = letter in fits and fits[letter].exact
+        if bounds[i] >= best or (fitted and bounds[i] >= limit):
             continue
         bound = fitting.bound(i)
         if bound < limit and bound <= HOPELESS and bound < best:
-            fitted = letter in fits and fits[letter].exact
             fit, exactly = fitting.fit(i, bound, min(limit, best if fitted else math.inf))
             if not exactly and fitted:
                 continue
@@ -215,7 +215,7 @@ def _fits(ink, letters, beat=None, refined=REFINED) -> Dict[str, _Found]:
             if exactly and fit < exact.get(letter, math.inf):
                 exact[letter] = found.fit
                 limit = _limit(exact, refined)
-        elif letter not in fits or not fits[letter].exact:
+        elif not fitted:
             found = _Found(bound, int(fitting.chosen[i]), (x, y, w, h), exact=False)
         else:
             continue
