@@ -3,10 +3,11 @@ graded in one run: a tree nested deeper than Python walks, a folder name
 that is not UTF-8, a FIFO, a package handed in twice, a package named
 turtlesim, a hostile build that prints 1 GB and an error line full of
 terminal codes, three executables and no launch file (one spins turtle1
-for ever), a workspace with a sibling package that cannot build here, and
-a Python package whose CMakeLists.txt names another project, and a
-package whose launch file starts turtlesim alone, its letter a shell
-script without #! that its course runs with bash.
+for ever), the same with two that turn it for ever, a workspace with a
+sibling package that cannot build here, and a Python package whose
+CMakeLists.txt names another project, and a package whose launch file
+starts turtlesim alone, its letter a shell script without #! that its
+course runs with bash.
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -34,6 +35,7 @@ while not rospy.is_shutdown():
     cmd.publish(turn)
     rospy.sleep(0.05)
 """
+TURN = SPIN.replace('1.0, 1.5', '0.0, 1.0')     # turns turtle1 in place for ever: no ink
 GAZEBO_WORLD = {'package.xml': '<package format="2"><name>gazebo_world</name>'
                                '<buildtool_depend>catkin</buildtool_depend></package>',
                 'CMakeLists.txt': 'cmake_minimum_required(VERSION 3.0.2)\nproject(gazebo_world)\n'
@@ -60,6 +62,7 @@ BY_HAND = {'package.xml': '<package format="2"><name>hw3</name><version>0.0.1</v
                                  "'[2.0, 0.0, 0.0]' '[0.0, 0.0, 0.0]'\n"}
 PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
 RUBRIC = os.path.join(HERE, 'rubric.yaml')
+NOAHS = ('o6_three', 'o10_turning')          # Noah's package, its scripts changed
 MULLER = os.fsdecode(b'o2_M\xfcller')      # "Müller" as a Latin-1 zip names it
 GRADER_MEMORY_KB = 400 * 1024               # the whole grader, Qt and all, on 1 GB of output
 pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason='grading makes network namespaces: '
@@ -77,6 +80,8 @@ CONCLUSIONS = {
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
     'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none of '
                                'hw3: the grader started its executables (letters.sh) instead'),
+    'o10_turning': ('', 'fail', 'spin_forever.py, keyboard.py not run alone: the alone runs '
+                                'had used the 50 s they share'),
 }
 
 
@@ -106,6 +111,12 @@ def graded(tmp_path_factory):
     with open(spin, 'w') as f:
         f.write(SPIN)
     os.chmod(spin, 0o755)
+    shutil.copytree(NOAH, os.path.join(cls, 'o10_turning'))
+    for name in ('n_controller.py', 'spin_forever.py'):
+        turn = os.path.join(cls, 'o10_turning', 'noah_ws', 'src', 'lab_one', 'scripts', name)
+        with open(turn, 'w') as f:
+            f.write(TURN)
+        os.chmod(turn, 0o755)
     shutil.copytree(LENA, os.path.join(cls, 'o7_siblings'))
     for name, text in GAZEBO_WORLD.items():
         os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
@@ -117,10 +128,11 @@ def graded(tmp_path_factory):
         with open(path, 'w') as f:
             f.write(text)
         os.chmod(path, 0o644)
+    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_')    # Müller (o2) is on no roster
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
-                                     if sid.startswith('o') and sid[1] not in '26') +
-        'o6_three,Noah Klein,N\n' +
+                                     if sid[:3] in lenas) +
+        ''.join(f'{sid},Noah Klein,N\n' for sid in NOAHS) +
         'h7_printer,Hugo Stile,P\n')
     before = sandbox_processes()
     try:

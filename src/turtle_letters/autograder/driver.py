@@ -117,13 +117,21 @@ def each_alone(expected, rubric, box, facts, run):
     not draw the letters run each alone in a fresh world, those that drove
     a turtle first, limits.alone of them at most, until one draws them; the
     best (facts, run) kept. Not where one of them alone acted on the
-    turtles: alone, it draws the same."""
+    turtles: alone, it draws the same. The alone runs share one drawing's
+    limit, each watched for what is left of it: a package whose nodes never
+    stop costs the class two limits, not one for each node."""
     first, best = run, rubrics.grade(facts, rubric).score
     fought = len(first.executables) > 1 and not seen.one_driver(first.record, first.events)
-    for name in session.drivers_first(first)[:rubric.limits.alone] if fought else []:
+    names = session.drivers_first(first)[:rubric.limits.alone] if fought else []
+    left = rubric.limits.drawing
+    for i, name in enumerate(names):
         if box.stopped or len(rubrics.credited(facts)) == len(expected):
             break
-        tried = session.alone(first, name, rubric.limits, box)
+        if left < rubric.limits.settle:
+            facts = facts._replace(launch=session.untried(facts.launch, names[i:], rubric.limits))
+            break
+        tried = session.alone(first, name, rubric.limits._replace(drawing=left), box)
+        left -= tried.watched_for()
         tried_facts = observed(expected, tried, rubric)
         score = rubrics.grade(tried_facts, rubric).score
         if score > best:

@@ -74,6 +74,7 @@ class Facts(NamedTuple):
     chatter_peak: float = 0.0       # the most messages a second on /chatter
     broken: str = ''                # how the grader's master or simulator was broken, if it was
     ocr: Optional[OcrReading] = None    # what OCR reads in the ink (ocr.py), beside `readings`
+    limit_s: Optional[float] = None     # s the drawing was watched for at most (session.Run)
 
     @classmethod
     def never_ran(cls, expected, problem):
@@ -88,7 +89,8 @@ class Facts(NamedTuple):
         return cls(expected, build=run.build, launch=run.launch, waited=run.waited,
                    talker=run.talker, drawing=drawing, readings=readings, stuck=run.stuck,
                    limit=run.limit, own_triggers=own_triggers(run.events),
-                   chatter_peak=chatter_peak(run.events), broken=run.broken, ocr=ocr)
+                   chatter_peak=chatter_peak(run.events), broken=run.broken, ocr=ocr,
+                   limit_s=run.limit_s)
 
 
 class Mark(NamedTuple):
@@ -298,7 +300,10 @@ def _ends(facts, rubric):
         return 0.0, 'the turtle never moved after the trigger' + (
             f': {facts.stuck}' if facts.stuck else '')
     if d.ended is None:
-        return 0.0, (f'the turtle was still moving {rubric.limits.drawing:g} s after it started: '
+        limit = round(facts.limit_s or rubric.limits.drawing, 1)
+        shared = (f' (run alone, with what was left of the {rubric.limits.drawing:g} s the '
+                  f'alone runs share)' if limit < rubric.limits.drawing else '')
+        return 0.0, (f'the turtle was still moving {limit:g} s after it started{shared}: '
                      f'the drawing never ended')
     return 1.0, f'ended after {d.seconds:.1f} s, the turtle standing still'
 

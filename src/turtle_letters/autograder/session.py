@@ -56,6 +56,11 @@ class Run:
         self.passed_over = None  # why the package's launch file was not run, if it was not
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
+        self.limit_s = None     # s the drawing was watched for at most (limits.drawing)
+
+    def watched_for(self):
+        """s the drawing was watched for, from the trigger (or the launch) on."""
+        return self.finished - self.since if self.since is not None and self.finished else 0.0
 
 
 def caps(limits: Limits) -> Caps:
@@ -210,6 +215,13 @@ def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
     return result
 
 
+def untried(launch: Step, names, limits: Limits) -> Step:
+    """The launch step of the run kept, where `names` were not run alone:
+    the alone runs had used the one drawing limit they share."""
+    return launch._replace(says=f'{launch.says}; {", ".join(names)} not run alone: the alone '
+                                f'runs had used the {limits.drawing:g} s they share')
+
+
 def executables(box, package):
     """The package's executables, by name: its scripts (made executable) and
     what its build made."""
@@ -346,6 +358,7 @@ def _watch(lab, limits, result):
         wait_until(lambda: seen.trigger(events, typed, by_grader=True) is not None, 5.0)
         result.trigger = seen.trigger(events, typed, by_grader=True) or time.monotonic()
     since = result.since = seen.looked_for_from(record, started, result.trigger)
+    result.limit_s = limits.drawing
     if wait_until(lambda: seen.moved(record, since), limits.start, alive):
         wait_until(lambda: _stood(record, since, limits.settle), limits.drawing, alive)
         if terminal.process.poll() is not None:

@@ -261,3 +261,15 @@ def test_neither_reader_credits_a_mirrored_letter_or_another_one():
         said = scores_of(grade(facts(Drawing(ink, 1.0, 5.0, 90, []), expected, ocr=True),
                                rubric))
         assert said['The letter drawn is the expected one'][0] == 0, (drawn, expected, said)
+
+
+def test_a_drawing_that_never_ended_says_the_limit_it_was_watched_for():
+    rubric, ends = load(DEFAULT), CRITERIA['ends'][0]
+    moving = Drawing([L_PATH], 1.0, None, 200, [])
+    full = scores_of(grade(facts(moving)._replace(limit_s=rubric.limits.drawing), rubric))
+    share = scores_of(grade(facts(moving)._replace(limit_s=72.46), rubric))
+    assert full[ends] == (0.0, 'the turtle was still moving 180 s after it started: the '
+                                 'drawing never ended')
+    assert share[ends] == (0.0, 'the turtle was still moving 72.5 s after it started (run '
+                                  'alone, with what was left of the 180 s the alone runs '
+                                  'share): the drawing never ended')
