@@ -9,6 +9,7 @@ from scipy.ndimage import distance_transform_edt, maximum_filter
 CELL = 0.01         # share of the height: the grid distances are measured on
 WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a dash)
 THIN = 0.2          # half the width, share of the height, of an outline's band at most
+AS_BOX = 0.97       # share of its box a closed line fills: a box (a D with cut corners 0.91)
 CLOSED = 0.03       # share of the height within which a line's ends meet: a contour
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 
@@ -143,3 +144,22 @@ def outline(ink):
     ridge &= depth >= numpy.median(depth[ridge]) / 2      # the spurs to its corners cut short
     rows, cols = numpy.nonzero(ridge)
     return [[(x + (c - 1) * CELL * h, y + (r - 1) * CELL * h)] for r, c in zip(rows, cols)]
+
+
+def boxed(ink):
+    """Width-to-height of `ink` where it is a box: one closed line that
+    fills AS_BOX of its box or more, turned back to its squarest (to an
+    eighth of a degree); else None."""
+    if len(ink) != 1 or len(ink[0]) < 4:
+        return None
+    line = numpy.array(ink[0], dtype=float)
+    if not closed(ink[0], max(numpy.ptp(line, axis=0))):
+        return None
+    xs, ys = line[:, 0], line[:, 1]
+    area = abs(numpy.dot(xs, numpy.roll(ys, 1)) - numpy.dot(ys, numpy.roll(xs, 1))) / 2
+    angles = numpy.radians(squarest_turn(ink) + numpy.arange(-1.25, 1.3, 0.125))[:, None]
+    across = numpy.ptp(xs * numpy.cos(angles) + ys * numpy.sin(angles), axis=1)
+    up = numpy.ptp(ys * numpy.cos(angles) - xs * numpy.sin(angles), axis=1)
+    least = int(numpy.argmin(across * up))
+    width, height = across[least], up[least]
+    return width / height if height > 0 and area >= AS_BOX * width * height else None

@@ -23,7 +23,7 @@ from scipy.ndimage import distance_transform_edt
 from scipy.spatial.distance import directed_hausdorff
 
 from .forms import READABLE, Point, grid_rows, templates
-from .ink import CELL, WIDEST, box, outline, sampled, thinned, turned
+from .ink import CELL, WIDEST, box, boxed, outline, sampled, thinned, turned
 
 LEVEL = 0.03        # a fit this good level is not tried tilted
 TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
@@ -35,6 +35,9 @@ HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it ca
 AMBIGUOUS = 0.005   # another letter fitting within this of the best: the two cannot be told apart
 WITNESSES = 4       # the ink cells farthest from the last few candidates fitted, kept
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
+# A box this wide for its height is a block I's edge and a square O alike: no letter.
+# (A DejaVu Sans Bold I stretched to 0.48 was credited as the O it was graded against.)
+DOUBTFUL_BOX = (0.3, 0.5)
 
 
 class Fit(NamedTuple):
@@ -244,7 +247,15 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
-    middle = outline(ink)       # an outline is read by its middle line
+    reading = _read_either(ink, letters, tilts, finer, refined)
+    if reading.letter is not None and DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1]:
+        return Reading(None, reading.best, reading.fits)
+    return reading
+
+
+def _read_either(ink, letters, tilts, finer, refined):
+    """read(), of an outline by its middle line, else of the ink as drawn."""
+    middle = outline(ink)
     if middle is None:
         return _read(ink, letters, tilts, finer, refined)
     reading = _read(middle, letters, tilts, finer, refined)
