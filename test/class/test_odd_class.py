@@ -3,7 +3,8 @@ graded in one run: a tree nested deeper than Python walks, a folder name
 that is not UTF-8, a FIFO, a package handed in twice, a package named
 turtlesim, a hostile build that prints 1 GB and an error line full of
 terminal codes, three executables and no launch file (one spins turtle1
-for ever), the same with two that turn it for ever, a workspace with a
+for ever), the same with two that turn it for ever and one that offers a
+cmd_vel and sends nothing (tried alone after those that acted), a workspace with a
 sibling package that cannot build here, and a Python package whose
 CMakeLists.txt names another project, and a package whose launch file
 starts turtlesim alone, its letter a shell script without #! that its
@@ -36,6 +37,7 @@ while not rospy.is_shutdown():
     rospy.sleep(0.05)
 """
 TURN = SPIN.replace('1.0, 1.5', '0.0, 1.0')     # turns turtle1 in place for ever: no ink
+IDLE = SPIN.split('turn = Twist()')[0] + 'rospy.spin()\n'    # offers a cmd_vel, sends nothing
 GAZEBO_WORLD = {'package.xml': '<package format="2"><name>gazebo_world</name>'
                                '<buildtool_depend>catkin</buildtool_depend></package>',
                 'CMakeLists.txt': 'cmake_minimum_required(VERSION 3.0.2)\nproject(gazebo_world)\n'
@@ -80,8 +82,8 @@ CONCLUSIONS = {
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
     'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none of '
                                'hw3: the grader started its executables (letters.sh) instead'),
-    'o10_turning': ('', 'fail', 'spin_forever.py, keyboard.py not run alone: the alone runs '
-                                'had used the 50 s they share'),
+    'o10_turning': ('', 'fail', 'spin_forever.py, idle.py, keyboard.py not run alone: the '
+                                'alone runs had used the 50 s they share'),
 }
 
 
@@ -112,11 +114,11 @@ def graded(tmp_path_factory):
         f.write(SPIN)
     os.chmod(spin, 0o755)
     shutil.copytree(NOAH, os.path.join(cls, 'o10_turning'))
-    for name in ('n_controller.py', 'spin_forever.py'):
-        turn = os.path.join(cls, 'o10_turning', 'noah_ws', 'src', 'lab_one', 'scripts', name)
-        with open(turn, 'w') as f:
-            f.write(TURN)
-        os.chmod(turn, 0o755)
+    for name, text in (('n_controller.py', TURN), ('spin_forever.py', TURN), ('idle.py', IDLE)):
+        script = os.path.join(cls, 'o10_turning', 'noah_ws', 'src', 'lab_one', 'scripts', name)
+        with open(script, 'w') as f:
+            f.write(text)
+        os.chmod(script, 0o755)
     shutil.copytree(LENA, os.path.join(cls, 'o7_siblings'))
     for name, text in GAZEBO_WORLD.items():
         os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)

@@ -121,7 +121,7 @@ def each_alone(expected, rubric, box, facts, run):
     limit, each watched for what is left of it: a package whose nodes never
     stop costs the class two limits, not one for each node."""
     first, best = run, rubrics.grade(facts, rubric).score
-    fought = len(first.executables) > 1 and not seen.one_driver(first.record, first.events)
+    fought = len(first.executables) > 1 and not seen.one_driver(first.record)
     names = session.drivers_first(first)[:rubric.limits.alone] if fought else []
     left = rubric.limits.drawing
     for i, name in enumerate(names):

@@ -20,7 +20,6 @@ TURTLESIM_SERVICES = ('/spawn', '/kill', '/clear', '/reset')
 COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 MOVES = ('move', 'jump')    # record lines of a turtle changing place or heading
-CALLED = ('spawn', 'kill', 'pen', 'clear', 'reset', 'jump', 'refused')    # a service call's lines
 INK = 1e-6          # m: a segment shorter than this is a pen turned in place, not ink
 BACKGROUND = DEFAULT_BACKGROUND     # the grader's simulator's, until a clear or reset says
 
@@ -216,11 +215,18 @@ def controllers(events):
     return _ever_in_graph(events, 'cmd_vel_publishers')
 
 
-def one_driver(record, events):
-    """Whether one node alone acted on the turtles: it alone published on a
-    cmd_vel, and no service call changed the world (the record does not say
-    who called one). Run alone, that node would draw what it drew."""
-    return len(controllers(events)) == 1 and not any(e['k'] in CALLED for e in record[1:])
+def actors(record):
+    """The nodes that commanded a turtle or changed the world by a call,
+    as the grader's simulator told it (its `by` lines)."""
+    return {e['node'] for e in record if e['k'] == 'by'}
+
+
+def one_driver(record):
+    """Whether one node alone acted on the turtles: the simulator took
+    commands and calls from it only (others may have offered a cmd_vel and
+    sent nothing: a node that waits for typed goals). Run alone, that node
+    would draw what it drew."""
+    return len(actors(record)) == 1
 
 
 def trigger(events, since, by_grader=False):

@@ -253,10 +253,10 @@ def generated_launch(box, package, names):
 
 def drivers_first(run):
     """The executables a run started for want of a launch file, those whose
-    node drove a turtle over cmd_vel first (a TA tries the controllers
-    alone first), each part in name order."""
-    drove = seen.controllers(run.events)
-    first = [name for i, name in enumerate(run.executables) if f'/{_node(name, i)}' in drove]
+    node acted on the turtles first (the simulator's account: a TA tries
+    the controllers alone first), each part in name order."""
+    acted = seen.actors(run.record)
+    first = [name for i, name in enumerate(run.executables) if f'/{_node(name, i)}' in acted]
     return first + [name for name in run.executables if name not in first]
 
 

@@ -153,11 +153,11 @@ def test_a_launch_roslaunch_refused_a_node_of_is_waited_for_only_a_while_after()
 
 def test_executables_that_drove_together_are_tried_alone_first():
     """The generated launch file's node names (of the file, and its place)
-    tell which executable drove: spin_forever.py and n_controller.py did,
-    keyboard.py only talked."""
-    graph = dict(kind='graph', t=1.0, cmd_vel_publishers=['/spin_forever2', '/n_controller1'])
+    tell which executable acted (the simulator's `by` lines):
+    spin_forever.py and n_controller.py did, keyboard.py only talked."""
+    acted = [dict(k='by', t=1.0, node='/spin_forever2'), dict(k='by', t=1.2, node='/n_controller1')]
     run = SimpleNamespace(executables=['keyboard.py', 'n_controller.py', 'spin_forever.py'],
-                          events=[graph])
+                          record=acted)
     assert drivers_first(run) == ['n_controller.py', 'spin_forever.py', 'keyboard.py']
-    graph['cmd_vel_publishers'] = ['/keyboard1']    # a name that is not its place: no driver
+    run.record = [dict(k='by', t=1.0, node='/keyboard1')]   # a name that is not its place
     assert drivers_first(run) == run.executables

@@ -39,11 +39,12 @@ def run_of(name, executables=(), drivers=()):
     """A fake session.Run: its steps, what it started, who published on
     cmd_vel, its log."""
     graph = dict(kind='graph', t=1.0, cmd_vel_publishers=list(drivers))
+    by = [dict(k='by', t=1.0, node=node) for node in drivers]
     return SimpleNamespace(name=name, build=OK, launch=Step(False, f'{name} launched'),
                            waited=OK, talker=OK, stuck='', limit='', broken='', events=[graph],
-                           record=[dict(k='spawn', t=0.0, turtle='turtle1')],
-                           executables=list(executables), cpu_pct=None,
-                           log=[(f'roslaunch ({name})', f'{name} ran')])
+                           record=[dict(k='spawn', t=0.0, turtle='turtle1')] + by,
+                           executables=list(executables), cpu_pct=None, limit_s=None,
+                           watched_for=lambda: 0.0, log=[(f'roslaunch ({name})', f'{name} ran')])
 
 
 def observing(drawn):

@@ -64,6 +64,12 @@ def backlog(sock):
     return struct.unpack('i', fcntl.ioctl(sock.fileno(), TIOCOUTQ, b'\0' * 4))[0]
 
 
+def caller(message):
+    """The name of the node that sent `message` (a command, or a service's
+    request), as rospy's connection header gives it."""
+    return getattr(message, '_connection_header', {}).get('callerid', '?')
+
+
 class _Call:
     """A service request waiting for the next tick. A caller that gives up
     withdraws it, so that nothing it was told failed happens later."""
@@ -285,6 +291,7 @@ class TurtlesimNode:
             try:
                 turtle.command(msg.linear.x, msg.linear.y, msg.angular.z, time.monotonic())
                 self.record.command(name)
+                self.record.acted(caller(msg))
             except RequestError as e:
                 rospy.logwarn_throttle(1.0, '%s/cmd_vel: %s; the command is ignored', name, e)
 
@@ -292,7 +299,7 @@ class TurtlesimNode:
         rospy.logerr('%s: %s', what, error)
         raise rospy.ServiceException(str(error))
 
-    def _turtle_call(self, name, what, action):
+    def _turtle_call(self, name, what, action, req):
         def run():
             turtle = self._world.get(name)
             if turtle is None:
@@ -302,6 +309,7 @@ class TurtlesimNode:
             except RequestError as e:
                 rospy.logwarn('%s/%s: %s; nothing changed', name, what, e)
                 raise rospy.ServiceException(str(e))
+            self.record.acted(caller(req))
             self.changed = True
         self.at_next_tick(run)
 
@@ -310,17 +318,17 @@ class TurtlesimNode:
             turtle.set_pen(req.r, req.g, req.b, req.width, req.off)
             self.record('pen', turtle=name, r=req.r, g=req.g, b=req.b, width=turtle.pen.width,
                         off=bool(req.off))
-        self._turtle_call(name, 'set_pen', set_pen)
+        self._turtle_call(name, 'set_pen', set_pen, req)
         return SetPenResponse()
 
     def on_teleport_absolute(self, name, req):
         self._turtle_call(name, 'teleport_absolute',
-                          lambda t: t.teleport_absolute(req.x, req.y, req.theta))
+                          lambda t: t.teleport_absolute(req.x, req.y, req.theta), req)
         return TeleportAbsoluteResponse()
 
     def on_teleport_relative(self, name, req):
         self._turtle_call(name, 'teleport_relative',
-                          lambda t: t.teleport_relative(req.linear, req.angular))
+                          lambda t: t.teleport_relative(req.linear, req.angular), req)
         return TeleportRelativeResponse()
 
     def _spawn(self, x, y, theta, name):
@@ -335,7 +343,9 @@ class TurtlesimNode:
     def on_spawn(self, req):
         def run():
             try:
-                return SpawnResponse(self._spawn(req.x, req.y, req.theta, req.name))
+                name = self._spawn(req.x, req.y, req.theta, req.name)
+                self.record.acted(caller(req))
+                return SpawnResponse(name)
             except RequestError as e:
                 self.record('refused', call='spawn', why=str(e))
                 self._refuse('spawn', e)
@@ -349,22 +359,24 @@ class TurtlesimNode:
                 self._refuse('kill', e)
             self._endpoints.pop(req.name).close()
             self.record('kill', turtle=req.name)
+            self.record.acted(caller(req))
             self.changed = True
         self.at_next_tick(run)
         return KillResponse()
 
-    def on_clear(self, _req):
+    def on_clear(self, req):
         rospy.loginfo('Clearing turtlesim.')
         background = self._background()
 
         def run():
             self._canvas.clear(background)
             self.record('clear', background=list(background))
+            self.record.acted(caller(req))
             self.changed = True
         self.at_next_tick(run)
         return EmptyResponse()
 
-    def on_reset(self, _req):
+    def on_reset(self, req):
         rospy.loginfo('Resetting turtlesim.')
         background = self._background()
 
@@ -375,6 +387,7 @@ class TurtlesimNode:
             self._world = World(self._max_turtles)
             self._canvas.clear(background)
             self.record('reset', background=list(background))
+            self.record.acted(caller(req))
             self._spawn(CENTRE, CENTRE, 0.0, '')
         self.at_next_tick(run)
         return EmptyResponse()

@@ -33,3 +33,13 @@ def test_teleports_that_come_back_where_they_began_are_told_with_their_ink():
     jumps = [line for line in lines_of(read_end) if line['k'] == 'jump']
     assert len(jumps) == 1 and jumps[0]['n'] == 2 and len(jumps[0]['ink']) == 2
     assert jumps[0]['to'] == [5.0, 5.0, 0.0]
+
+
+def test_each_node_that_acted_is_told_once():
+    read_end, write_end = os.pipe()
+    record = Record({FD_VARIABLE: str(write_end)})
+    for node in ('/controller', '/controller', '/rosservice_1', '/controller'):
+        record.acted(node)
+    record.account.out.close()
+    assert [line['node'] for line in lines_of(read_end) if line['k'] == 'by'] == \
+        ['/controller', '/rosservice_1']
