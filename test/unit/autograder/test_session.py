@@ -155,7 +155,8 @@ def test_executables_that_drove_together_are_tried_alone_first():
     """The generated launch file's node names (of the file, and its place)
     tell which executable acted (the simulator's `by` lines):
     spin_forever.py and n_controller.py did, keyboard.py only talked."""
-    acted = [dict(k='by', t=1.0, node='/spin_forever2'), dict(k='by', t=1.2, node='/n_controller1')]
+    acted = [dict(k='by', t=1.0, node='/spin_forever2'),
+             dict(k='by', t=1.2, node='/n_controller1')]
     run = SimpleNamespace(executables=['keyboard.py', 'n_controller.py', 'spin_forever.py'],
                           record=acted)
     assert drivers_first(run) == ['n_controller.py', 'spin_forever.py', 'keyboard.py']
