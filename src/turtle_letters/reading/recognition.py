@@ -243,7 +243,8 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     and so are the next `refined` - 1 letters'; another letter's is no
     better than theirs (_fits): read it alone for its own (rows.Row.reading
     does, for the letter expected). With `refined` 1, letters that cannot
-    fit best are left out: a row's cuts ask only how well a part fits."""
+    fit best are left out: a row's cuts ask only how well a part fits. A
+    box DOUBTFUL_BOX wide for its height (ink.boxed) reads as no letter."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
