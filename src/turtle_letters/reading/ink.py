@@ -86,11 +86,18 @@ def squarest_turn(ink):
     points = numpy.array([p for line in ink for p in line], dtype=float)
     if len(points) < 3:
         return 0.0
-    angles = numpy.radians(numpy.arange(-45, 47.5, 2.5))
-    c, s = numpy.cos(angles)[:, None], numpy.sin(angles)[:, None]
-    xs, ys = points[:, 0] * c + points[:, 1] * s, points[:, 1] * c - points[:, 0] * s
-    least = int(numpy.argmin(numpy.ptp(xs, 1) * numpy.ptp(ys, 1)))
-    return round(float(numpy.degrees(angles[least])), 1)
+    turns = numpy.arange(-45, 47.5, 2.5)
+    widths, heights = _spans(points, turns)
+    return round(float(turns[int(numpy.argmin(widths * heights))]), 1)
+
+
+def _spans(points, turns):
+    """The width and height of `points` (an array of (x, y)) turned back by
+    each of `turns`, degrees."""
+    angles = numpy.radians(turns)[:, None]
+    c, s = numpy.cos(angles), numpy.sin(angles)
+    xs, ys = points[:, 0], points[:, 1]
+    return numpy.ptp(xs * c + ys * s, axis=1), numpy.ptp(ys * c - xs * s, axis=1)
 
 
 def inside(points, line, share=0.5):
@@ -157,9 +164,7 @@ def boxed(ink):
         return None
     xs, ys = line[:, 0], line[:, 1]
     area = abs(numpy.dot(xs, numpy.roll(ys, 1)) - numpy.dot(ys, numpy.roll(xs, 1))) / 2
-    angles = numpy.radians(squarest_turn(ink) + numpy.arange(-1.25, 1.3, 0.125))[:, None]
-    across = numpy.ptp(xs * numpy.cos(angles) + ys * numpy.sin(angles), axis=1)
-    up = numpy.ptp(ys * numpy.cos(angles) - xs * numpy.sin(angles), axis=1)
-    least = int(numpy.argmin(across * up))
-    width, height = across[least], up[least]
+    widths, heights = _spans(line, squarest_turn(ink) + numpy.arange(-1.25, 1.3, 0.125))
+    least = int(numpy.argmin(widths * heights))
+    width, height = widths[least], heights[least]
     return width / height if height > 0 and area >= AS_BOX * width * height else None
