@@ -45,6 +45,8 @@ GAZEBO_WORLD = {'package.xml': '<package format="2"><name>gazebo_world</name>'
 # A course whose cadets start turtlesim with roslaunch, then type `bash
 # letters.sh`: a launch file of turtlesim alone, and a shell script of
 # rosservice and rostopic calls, mode 644 and without #!, that draws an L.
+# Its turn comes 8 s after its first stroke, longer than `settle`, as each
+# `rostopic pub -1` of a real class's scripts did on a slow machine.
 BY_HAND = {'package.xml': '<package format="2"><name>hw3</name><version>0.0.1</version>'
                           '<description>hw3</description><maintainer email="cadet@example.com">c'
                           '</maintainer><license>MIT</license>'
@@ -58,6 +60,7 @@ BY_HAND = {'package.xml': '<package format="2"><name>hw3</name><version>0.0.1</v
                                  'rosservice call /turtle1/set_pen 255 255 255 3 0\n'
                                  "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
                                  "'[3.0, 0.0, 0.0]' '[0.0, 0.0, 0.0]'\n"
+                                 'sleep 8\n'
                                  "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
                                  "'[0.0, 0.0, 0.0]' '[0.0, 0.0, 1.5708]'\n"
                                  "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "

@@ -8,7 +8,6 @@ import os
 import re
 import signal
 import subprocess
-import tempfile
 import time
 
 import pytest
@@ -101,19 +100,21 @@ def master_port():
     return 11411 + os.getpid() % 500
 
 
-def environment(port):
+def environment(port, home):
     env = readable_env(ROS_MASTER_URI=f'http://127.0.0.1:{port}', ROS_IP='127.0.0.1',
-                       ROS_HOME=tempfile.mkdtemp(prefix='doc_commands_'))
+                       ROS_HOME=str(home))
     env.pop('DISPLAY', None)        # headless, as in CI
     return env
 
 
-def start(command, env):
-    out = tempfile.NamedTemporaryFile('w+', suffix='.out', delete=False)
-    process = subprocess.Popen(['bash', '-c', command], cwd=REPO, env=env, stdout=out,
-                               stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                               start_new_session=True)
-    process.out_path = out.name
+def start(command, env, out_path):
+    """`command` started in its own session, its output to `out_path` (the
+    test's own folder: nothing is left in /tmp)."""
+    with open(out_path, 'w') as out:
+        process = subprocess.Popen(['bash', '-c', command], cwd=REPO, env=env, stdout=out,
+                                   stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                   start_new_session=True)
+    process.out_path = out_path
     return process
 
 
@@ -142,14 +143,15 @@ def ctrl_c(process):
 
 
 @pytest.mark.parametrize('command', LAUNCHES)
-def test_the_launch_comes_up_ready_and_stops_on_ctrl_c(command, master_port):
-    launch = start(command, environment(master_port))
+def test_the_launch_comes_up_ready_and_stops_on_ctrl_c(command, master_port, tmp_path):
+    env = environment(master_port, tmp_path)
+    launch = start(command, env, tmp_path / 'launch.out')
     try:
         wait_for(launch, 'Ready: publish', 240)
         for trigger, heard in TRIGGERS.get(command, []):
             if trigger:
                 sent = subprocess.run(['bash', '-c', trigger], cwd=REPO,
-                                      env=environment(master_port), stdout=subprocess.PIPE,
+                                      env=env, stdout=subprocess.PIPE,
                                       stderr=subprocess.STDOUT, universal_newlines=True,
                                       timeout=180)
                 assert sent.returncode == 0, sent.stdout

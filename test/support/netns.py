@@ -181,8 +181,14 @@ def classroom(addresses, unknown=()):
             pytest.skip(f'could not make network namespaces here: {e.output.strip()}')
         hosts = {name: Host(network, name, home) for name in addresses}
         yield hosts
+    except BaseException as e:
+        if not isinstance(e, pytest.skip.Exception):
+            print(f'\nlogs of the run: {home}')     # kept where the test failed
+            home = None
+        raise
     finally:
         for host in hosts.values():
             host.stop_all()
         network.remove()
-        print(f'\nlogs of the run: {home}')
+        if home:
+            shutil.rmtree(home, ignore_errors=True)

@@ -1,5 +1,6 @@
 """A real terminal for tests: a private tmux server, one pane, typed keys."""
 import os
+import shutil
 import subprocess
 import tempfile
 import time
@@ -56,3 +57,4 @@ class Terminal:
     def close(self):
         subprocess.run(['tmux', '-L', self.socket, 'kill-server'], timeout=10,
                        stderr=subprocess.DEVNULL)
+        shutil.rmtree(self.dir, ignore_errors=True)

@@ -21,6 +21,11 @@ COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
 MOVES = ('move', 'jump')    # record lines of a turtle changing place or heading
 INK = 1e-6          # m: a segment shorter than this is a pen turned in place, not ink
+# While a shell script of the submission runs, a pause ends the drawing only
+# this many times `settle` long: each `rostopic pub -1` line starts a node,
+# and on a slow machine the next came more than `settle` after the last
+# (a real class's scripts were judged ended halfway, or before their first move).
+SCRIPT_PAUSE = 4
 BACKGROUND = DEFAULT_BACKGROUND     # the grader's simulator's, until a clear or reset says
 
 
@@ -60,7 +65,7 @@ def of_run(run, settle):
     never reached the trigger."""
     if run.trigger is None:
         return None
-    return drawing(run.record, run.events, run.since, settle, run.finished)
+    return drawing(run.record, run.events, run.since, settle, run.finished, run.script_until)
 
 
 def _ever_in_graph(events, role):
@@ -104,6 +109,14 @@ def stood_for(record, since, now):
     return None if last is None or last < since else now - last
 
 
+def pause_ends(start, end, settle, script_until=None):
+    """Whether the turtles standing from `start` to `end` ends the drawing:
+    `settle` s, counted from when the submission's shell scripts last ran
+    (`script_until`, None: none ran) or SCRIPT_PAUSE times as long."""
+    ran = -math.inf if script_until is None else script_until
+    return end - max(start, ran) >= settle or end - start >= SCRIPT_PAUSE * settle
+
+
 def strokes(lines):
     """Unbroken lines of ink: each turtle's segments joined while each
     starts where the one before it ended, in the same pen (a segment None
@@ -125,9 +138,9 @@ def strokes(lines):
     return joined, looks
 
 
-def _end(record, first, settle, until):
-    """t of the last move before a pause of `settle` s, once a turtle has
-    been driven, or None. (Teleports before the first drive are set-up: a
+def _end(record, first, settle, until, script_until=None):
+    """t of the last move before a pause that ends the drawing (pause_ends),
+    once a turtle has been driven, or None. (Teleports before the first drive are set-up: a
     real class's script teleported with its pen down, cleared, spawned and
     set pens, one rosservice call at a time, for more than `settle` s before
     its first rostopic pub.)"""
@@ -135,19 +148,21 @@ def _end(record, first, settle, until):
     for e in record:
         if e['t'] <= first['t'] or e['k'] not in MOVES:
             continue
-        if driven and e['t'] - last >= settle:
+        if driven and pause_ends(last, e['t'], settle, script_until):
             return last
         last, driven = e['t'], driven or e['k'] == 'move'
-    return last if until - last >= settle else None
+    return last if pause_ends(last, until, settle, script_until) else None
 
 
-def drawing(record, events, since, settle, until=math.inf) -> Drawing:
+def drawing(record, events, since, settle, until=math.inf, script_until=None) -> Drawing:
     """The drawing that begins with the first move at or after `since`
-    (the record's first line is the simulator's own turtle1)."""
+    (the record's first line is the simulator's own turtle1), to a pause
+    that ends it (pause_ends: `script_until`, t a shell script of the
+    submission was last seen running)."""
     first = next(iter(moves(record, since, until)), None)
     if first is None:
         return Drawing([], None, None, 0, impostors(events))
-    ended = _end(record, first, settle, until)
+    ended = _end(record, first, settle, until, script_until)
     stop = ended if ended is not None else until
     during = [e for e in record if first['t'] <= e['t'] <= stop]
     wipes = [e for e in during if e['k'] in ('clear', 'reset')]

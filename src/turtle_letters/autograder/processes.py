@@ -10,18 +10,33 @@ import time
 from ..grading.procstat import cpu_seconds
 from . import observations as seen
 
+SHELLS = ('bash', 'sh', 'dash')
+
 
 def controller_processes(root, node):
     """pids of the processes under `root` that roslaunch started as `node`."""
-    wanted, found = f'__name:={node.rsplit("/", 1)[-1]}'.encode(), []
+    wanted = f'__name:={node.rsplit("/", 1)[-1]}'.encode()
+    return [pid for pid, args in _commands() if wanted in args and _descends(pid, root)]
+
+
+def script_nodes(root):
+    """pids of the processes under `root` that roslaunch started as nodes
+    and that are shell scripts (bash, sh or dash running a file)."""
+    return [pid for pid, args in _commands()
+            if os.path.basename(args[0]).decode(errors='replace') in SHELLS
+            and any(arg.startswith(b'__name:=') for arg in args) and _descends(pid, root)]
+
+
+def _commands():
+    """(pid, its command line's arguments) of each process there is."""
     for pid in filter(str.isdigit, os.listdir('/proc')):
         try:
             with open(f'/proc/{pid}/cmdline', 'rb') as f:
-                if wanted in f.read().split(b'\0'):
-                    found.append(int(pid))
+                args = f.read().split(b'\0')
         except OSError:
             continue
-    return [pid for pid in found if _descends(pid, root)]
+        if args[0]:
+            yield int(pid), args
 
 
 def _descends(pid, root):
@@ -34,6 +49,28 @@ def _descends(pid, root):
         except OSError:
             return False
     return False
+
+
+class RunningScripts:
+    """The shell scripts a run's roslaunch started as nodes, found once (the
+    lab is up): whether one still runs, and when one was last seen to."""
+
+    def __init__(self, root):
+        self.pids = script_nodes(root)
+        self.until = None       # monotonic t one was last seen running; None: none was
+
+    def running(self):
+        """Whether one still runs (a zombie, ended and not yet reaped, does not)."""
+        for pid in self.pids:
+            try:
+                with open(f'/proc/{pid}/stat') as f:
+                    state = f.read().rsplit(')', 1)[1].split()[0]
+            except OSError:
+                continue
+            if state != 'Z':
+                self.until = time.monotonic()
+                return True
+        return False
 
 
 class ControllerCpu:

@@ -18,7 +18,7 @@ from xml.sax.saxutils import quoteattr
 from ..isolation.sandbox import GiB, Caps, Sandbox
 from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
-from .processes import ControllerCpu, Reader
+from .processes import ControllerCpu, Reader, RunningScripts
 from .rubric import Limits
 from .submission import (MAX_NODES, Package, bare_shell, copy, made_executable, python_scripts,
                          scripts, started_packages)
@@ -57,6 +57,7 @@ class Run:
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
         self.limit_s = None     # s the drawing was watched for at most (limits.drawing)
+        self.script_until = None    # t a shell script it started was last seen running
 
     def watched_for(self):
         """s the drawing was watched for, from the trigger (or the launch) on."""
@@ -337,6 +338,7 @@ def _watch(lab, limits, result):
     wait_until(lambda: False, limits.stand, alive)
     result.waited = _waited(record, started, limits.stand)
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
+    scripts = RunningScripts(terminal.process.pid)
     shown = terminal.output.size
     terminal.type(b'P')
     time.sleep(0.2)
@@ -360,15 +362,15 @@ def _watch(lab, limits, result):
     since = result.since = seen.looked_for_from(record, started, result.trigger)
     result.limit_s = limits.drawing
     if wait_until(lambda: seen.moved(record, since), limits.start, alive):
-        wait_until(lambda: _stood(record, since, limits.settle), limits.drawing, alive)
+        wait_until(lambda: _stood(record, since, limits.settle, scripts), limits.drawing, alive)
         if terminal.process.poll() is not None:
             # roslaunch ended with its last node (a script of `rostopic pub -1`s): the
             # turtle's last command plays out, and it is seen to stand
-            wait_until(lambda: _stood(record, since, limits.settle), limits.settle + 1,
+            wait_until(lambda: _stood(record, since, limits.settle, scripts), limits.settle + 1,
                        lab.watchable)
     else:
         result.still_from = shown
-    result.cpu_pct = cpu.share()
+    result.cpu_pct, result.script_until = cpu.share(), scripts.until
 
 
 def _waited(record, started, stand):
@@ -415,6 +417,10 @@ def _explain(result, terminal, work):
                                  graph.get('offered') if graph else None)
 
 
-def _stood(record, since, settle):
-    still = seen.stood_for(record, since, time.monotonic())
-    return still is not None and still >= settle
+def _stood(record, since, settle, scripts):
+    """Whether the turtles have stood long enough to end the drawing (a
+    shell script of the submission that still runs makes it longer)."""
+    now = time.monotonic()
+    still = seen.stood_for(record, since, now)
+    scripts.running()
+    return still is not None and seen.pause_ends(now - still, now, settle, scripts.until)

@@ -2,9 +2,10 @@
 ink counts (the grader's simulator's record), and who triggered it."""
 import pytest
 
-from turtle_letters.autograder.observations import (chatter_peak, drawing, drew, looked_for_from,
-                                                   moved, one_driver, own_triggers, stood_for,
-                                                   strokes, roles, trigger, unprompted)
+from turtle_letters.autograder.observations import (SCRIPT_PAUSE, chatter_peak, drawing, drew,
+                                                   looked_for_from, moved, one_driver,
+                                                   own_triggers, stood_for, strokes, roles,
+                                                   trigger, unprompted)
 
 TICK = 0.016
 PEN = [179, 184, 255, 3]
@@ -158,6 +159,23 @@ def test_the_drawing_ends_when_the_turtles_stood_still_long_enough_and_not_befor
     assert drawing(record, [graph()], 0.5, 2.0, until=end + 2.0).ended == end
     paused = record + line(end + 1.5, 6.0, 7.0)
     assert drawing(paused, [graph()], 0.5, 2.0, until=20.0).ended == paused[-1]['t']
+
+
+def test_a_pause_while_a_shell_script_runs_ends_the_drawing_only_when_much_longer():
+    """A script of `rostopic pub -1` lines starts a node for each: on a
+    slow machine the next line's move came 3 s after the last (settle 2 s).
+    While the script runs, only SCRIPT_PAUSE times settle ends the drawing;
+    once it has ended, settle counts from its end."""
+    first = line(1, 5.0, 6.0)
+    record = first + line(first[-1]['t'] + 3.0, 6.0, 7.0)
+    last = record[-1]['t']
+    script_ended = last + 1.0       # `rostopic pub -1` waits a while before it exits
+    assert drawing(record, [graph()], 0.5, 2.0, until=30.0).ended == first[-1]['t']
+    assert drawing(record, [graph()], 0.5, 2.0, 30.0, script_ended).ended == last
+    assert drawing(record, [graph()], 0.5, 2.0, script_ended + 1.9, script_ended).ended is None
+    assert drawing(record, [graph()], 0.5, 2.0, script_ended + 2.0, script_ended).ended == last
+    longer = first + line(first[-1]['t'] + SCRIPT_PAUSE * 2.0, 6.0, 7.0)
+    assert drawing(longer, [graph()], 0.5, 2.0, 60.0, 59.0).ended == first[-1]['t']
 
 
 def test_spawns_kills_and_pens_count_from_the_launch_but_the_simulators_own_turtle1():

@@ -44,7 +44,7 @@ def run_of(name, executables=(), drivers=()):
                            waited=OK, talker=OK, stuck='', limit='', broken='', events=[graph],
                            record=[dict(k='spawn', t=0.0, turtle='turtle1')] + by,
                            executables=list(executables), cpu_pct=None, limit_s=None,
-                           watched_for=lambda: 0.0, log=[(f'roslaunch ({name})', f'{name} ran')])
+                           script_until=None, watched_for=lambda: 0.0, log=[(f'roslaunch ({name})', f'{name} ran')])
 
 
 def observing(drawn):
