@@ -19,11 +19,14 @@ def controller_processes(root, node):
     return [pid for pid, args in _commands() if wanted in args and _descends(pid, root)]
 
 
-def script_nodes(root):
+def script_nodes(root, folder):
     """pids of the processes under `root` that roslaunch started as nodes
-    and that are shell scripts (bash, sh or dash running a file)."""
+    and that are shell scripts in `folder` (bash, sh or dash running a file
+    there: not the grader's own stand-in for turtlesim, a script too)."""
+    inside = os.fsencode(os.path.join(folder, ''))
     return [pid for pid, args in _commands()
             if os.path.basename(args[0]).decode(errors='replace') in SHELLS
+            and len(args) > 1 and args[1].startswith(inside)
             and any(arg.startswith(b'__name:=') for arg in args) and _descends(pid, root)]
 
 
@@ -52,11 +55,12 @@ def _descends(pid, root):
 
 
 class RunningScripts:
-    """The shell scripts a run's roslaunch started as nodes, found once (the
-    lab is up): whether one still runs, and when one was last seen to."""
+    """The submission's shell scripts (in `folder`) that a run's roslaunch
+    started as nodes, found once (the lab is up): whether one still runs,
+    and when one was last seen to."""
 
-    def __init__(self, root):
-        self.pids = script_nodes(root)
+    def __init__(self, root, folder):
+        self.pids = script_nodes(root, folder)
         self.until = None       # monotonic t one was last seen running; None: none was
 
     def running(self):

@@ -338,7 +338,7 @@ def _watch(lab, limits, result):
     wait_until(lambda: False, limits.stand, alive)
     result.waited = _waited(record, started, limits.stand)
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
-    scripts = RunningScripts(terminal.process.pid)
+    scripts = RunningScripts(terminal.process.pid, os.path.join(terminal.box.work, 'ws'))
     shown = terminal.output.size
     terminal.type(b'P')
     time.sleep(0.2)

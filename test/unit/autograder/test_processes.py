@@ -6,7 +6,8 @@ import subprocess
 import sys
 import time
 
-from turtle_letters.autograder.processes import Capped, ControllerCpu, Reader
+from turtle_letters.autograder.processes import (Capped, ControllerCpu, Reader, RunningScripts,
+                                                controller_processes)
 
 
 def test_the_start_and_end_are_kept_and_the_middle_counted():
@@ -66,3 +67,35 @@ def test_a_controller_that_ended_has_no_cpu_figure_never_a_negative_one():
     cpu.used = cpu._used()
     busy.wait()
     assert cpu.share() is None
+
+
+def test_a_shell_script_of_the_submission_is_seen_running_until_it_ends(tmp_path):
+    """Started as roslaunch starts nodes (`bash FILE __name:=...`): the
+    submission's script in its workspace counts, the grader's stand-in for
+    turtlesim (a script too, outside it) does not, and one that ended is no
+    longer seen."""
+    (tmp_path / 'ws').mkdir()
+    (tmp_path / 'stand_in').mkdir()
+    (tmp_path / 'ws' / 'letters.sh').write_text('read line < "$0.go"\n')
+    (tmp_path / 'stand_in' / 'turtlesim_node').write_text('sleep 60\n')
+    os.mkfifo(str(tmp_path / 'ws' / 'letters.sh.go'))
+    launch = subprocess.Popen(
+        ['bash', '-c', 'bash "$0"/ws/letters.sh __name:=letters & '
+                       'sh "$0"/stand_in/turtlesim_node __name:=sim & wait', str(tmp_path)],
+        start_new_session=True)
+    try:
+        deadline = time.monotonic() + 10
+        while not (controller_processes(launch.pid, 'sim') and
+                   controller_processes(launch.pid, 'letters')) and time.monotonic() < deadline:
+            time.sleep(0.05)        # both up
+        scripts = RunningScripts(launch.pid, str(tmp_path / 'ws'))
+        assert len(scripts.pids) == 1 and scripts.running() and scripts.until is not None
+        seen = scripts.until
+        with open(tmp_path / 'ws' / 'letters.sh.go', 'w') as go:     # the script ends
+            go.write('\n')
+        while scripts.running() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert not scripts.running() and scripts.until >= seen
+    finally:
+        os.killpg(launch.pid, 9)
+        launch.wait()
