@@ -422,5 +422,5 @@ def _stood(record, since, settle, scripts):
     shell script of the submission that still runs makes it longer)."""
     now = time.monotonic()
     still = seen.stood_for(record, since, now)
-    scripts.running()
+    scripts.running()      # notes when one was last seen running
     return still is not None and seen.pause_ends(now - still, now, settle, scripts.until)
