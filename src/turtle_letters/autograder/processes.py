@@ -7,7 +7,7 @@ import select
 import threading
 import time
 
-from ..grading.procstat import cpu_seconds
+from ..grading.procstat import cpu_seconds, stat_fields
 from . import observations as seen
 
 SHELLS = ('bash', 'sh', 'dash')
@@ -47,8 +47,7 @@ def _descends(pid, root):
         if pid == root:
             return True
         try:
-            with open(f'/proc/{pid}/stat') as f:
-                pid = int(f.read().rsplit(')', 1)[1].split()[1])
+            pid = int(stat_fields(pid)[1])
         except OSError:
             return False
     return False
@@ -67,8 +66,7 @@ class RunningScripts:
         """Whether one still runs (a zombie, ended and not yet reaped, does not)."""
         for pid in self.pids:
             try:
-                with open(f'/proc/{pid}/stat') as f:
-                    state = f.read().rsplit(')', 1)[1].split()[0]
+                state = stat_fields(pid)[0]
             except OSError:
                 continue
             if state != 'Z':
