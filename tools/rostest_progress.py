@@ -1,13 +1,19 @@
 """`make test`'s rostest phase as it goes: catkin's run_tests output on
-stdin (tee'd whole to the log), and on stdout a line as each rostest starts,
-`[n/N] rostest PACKAGE FILE (m:ss in)`, so that twelve quiet minutes say
-which test runs and how far the phase is."""
+stdin (tee'd whole to the log), and on stdout a line as each rostest ends,
+`[n/N] rostest PACKAGE FILE: RESULT (m:ss in)`. The rostests run two at a
+time with make's output grouped by test (-Otarget), so a test's lines come
+together once it ends: rostest's command and its ` * RESULT:`, in either
+order (run_tests.py's own lines are buffered where PYTHONUNBUFFERED is
+unset), then run_tests.py's `verify result`, which ends the test's lines."""
+import re
 import sys
 import time
 
+RESULT = re.compile(r'\* RESULT: (\w+)')
+
 
 def started(line):
-    """(package, file) of the rostest a line of run_tests starts, or None."""
+    """(package, file) of the rostest whose command a line of run_tests is, or None."""
     words = line.split()
     if '--results-filename' not in words:
         return None
@@ -17,15 +23,20 @@ def started(line):
 
 
 def main(total, lines=sys.stdin, out=sys.stdout, clock=time.monotonic):
-    begun, count = clock(), 0
+    begun, count, test, result = clock(), 0, None, 'no result'
     for line in lines:
-        test = started(line)
-        if test:
+        found = RESULT.search(line)
+        if found:
+            result = found.group(1)
+        elif started(line):
+            test = started(line)
+        elif 'run_tests.py: verify result' in line and test:
             count += 1
             minutes, seconds = divmod(int(clock() - begun), 60)
-            out.write(f'  [{count}/{total}] rostest {test[0]} {test[1]} '
+            out.write(f'  [{count}/{total}] rostest {test[0]} {test[1]}: {result} '
                       f'({minutes}:{seconds:02d} in)\n')
             out.flush()
+            test, result = None, 'no result'
 
 
 if __name__ == '__main__':

@@ -4,7 +4,6 @@ import shutil
 import subprocess
 import tempfile
 import time
-import uuid
 
 
 class Terminal:
@@ -12,18 +11,18 @@ class Terminal:
     and never touches the user's tmux; closed (and its server killed) by close()."""
 
     def __init__(self, command, width=120, height=40, cwd=False):
-        # a name of its own: an id() comes back once its object is freed, and
-        # a server of that name still shutting down refused the new session
-        # ("server exited unexpectedly", seen in a fresh clone's run)
-        self.socket = f'turtle_letters_test_{os.getpid()}_{uuid.uuid4().hex}'
         self.dir = tempfile.mkdtemp(prefix='turtle_letters_tty_')
+        # in a folder of its own, removed by close(): tmux leaves its socket
+        # behind, and a server still shutting down refuses a new session of
+        # its name ("server exited unexpectedly", seen in a fresh clone's run)
+        self.socket = os.path.join(self.dir, 'tmux.socket')
         self._tmux('new-session', '-d', '-x', str(width), '-y', str(height), '-s', 'test',
                    '-c', self.dir if cwd else os.getcwd(), 'bash --norc --noprofile')
         self.tty = self._tmux('display-message', '-p', '-t', 'test', '#{pane_tty}').strip()
         self.send_line(command)
 
     def _tmux(self, *args):
-        return subprocess.run(['tmux', '-L', self.socket, *args], check=True, timeout=10,
+        return subprocess.run(['tmux', '-S', self.socket, *args], check=True, timeout=10,
                               stdout=subprocess.PIPE, universal_newlines=True).stdout
 
     def send_line(self, text):
@@ -55,6 +54,6 @@ class Terminal:
                               stdout=subprocess.PIPE, universal_newlines=True).stdout.split()
 
     def close(self):
-        subprocess.run(['tmux', '-L', self.socket, 'kill-server'], timeout=10,
+        subprocess.run(['tmux', '-S', self.socket, 'kill-server'], timeout=10,
                        stderr=subprocess.DEVNULL)
         shutil.rmtree(self.dir, ignore_errors=True)

@@ -198,15 +198,16 @@ class TurtlesimContract(unittest.TestCase):
         path = rospy.get_param('/turtlesim/canvas_png')
         # Read once at start: a later `rosparam set` (from any machine) is not
         # obeyed, so it cannot point the save at somebody's file.
-        victim = os.path.join(tempfile.mkdtemp(), '.bashrc')
-        with open(victim, 'w') as f:
-            f.write('export PATH\n')
-        rospy.set_param('/turtlesim/canvas_png', victim)
-        answer = call('/turtlesim/save_canvas', Trigger)
-        self.assertTrue(answer.success, answer.message)
-        self.assertEqual(answer.message, path)
-        with open(victim) as f:
-            self.assertEqual(f.read(), 'export PATH\n')
+        with tempfile.TemporaryDirectory() as folder:
+            victim = os.path.join(folder, '.bashrc')
+            with open(victim, 'w') as f:
+                f.write('export PATH\n')
+            rospy.set_param('/turtlesim/canvas_png', victim)
+            answer = call('/turtlesim/save_canvas', Trigger)
+            self.assertTrue(answer.success, answer.message)
+            self.assertEqual(answer.message, path)
+            with open(victim) as f:
+                self.assertEqual(f.read(), 'export PATH\n')
         image = QImage(path)
         self.assertEqual((image.width(), image.height()), (500, 500))
         for x in (1.5, 2.0, 2.5, 3.0):
