@@ -12,7 +12,7 @@ import time
 RESULT = re.compile(r'\* RESULT: (\w+)')
 
 
-def started(line):
+def command_of(line):
     """(package, file) of the rostest whose command a line of run_tests is, or None."""
     words = line.split()
     if '--results-filename' not in words:
@@ -28,8 +28,8 @@ def main(total, lines=sys.stdin, out=sys.stdout, clock=time.monotonic):
         found = RESULT.search(line)
         if found:
             result = found.group(1)
-        elif started(line):
-            test = started(line)
+        elif command_of(line):
+            test = command_of(line)
         elif 'run_tests.py: verify result' in line and test:
             count += 1
             minutes, seconds = divmod(int(clock() - begun), 60)
