@@ -1,30 +1,46 @@
-"""Count the test cases in JUnit XML files and print one line: N passed, N failed[, N skipped]."""
+"""Count the test cases in JUnit XML files and print one line: N passed, N failed[, N skipped].
+
+Each failed case is named on a line of its own just before it: CI shows only
+the end of the output, and the count alone does not say which test to read.
+"""
 import glob
 import os
 import sys
 import xml.etree.ElementTree as ET
 
 
+def outcome(case):
+    kinds = {child.tag for child in case}
+    if kinds & {'failure', 'error'}:
+        return 'failed'
+    return 'skipped' if 'skipped' in kinds else 'passed'
+
+
+def case_name(results_dir, path, case):
+    where = os.path.relpath(path, results_dir)
+    return f"{where}: {case.get('classname', '')}.{case.get('name', '')}"
+
+
 def main(results_dir):
-    passed = failed = skipped = 0
-    for path in glob.glob(os.path.join(results_dir, '**', '*.xml'), recursive=True):
+    counts = {'passed': 0, 'failed': 0, 'skipped': 0}
+    failures = []
+    for path in sorted(glob.glob(os.path.join(results_dir, '**', '*.xml'), recursive=True)):
         try:
             root = ET.parse(path).getroot()
         except ET.ParseError:
-            print(f'unreadable test result {path}', file=sys.stderr)
-            failed += 1
+            failures.append(f'{os.path.relpath(path, results_dir)}: unreadable test result')
+            counts['failed'] += 1
             continue
         for case in root.iter('testcase'):
-            kinds = {child.tag for child in case}
-            if kinds & {'failure', 'error'}:
-                failed += 1
-            elif 'skipped' in kinds:
-                skipped += 1
-            else:
-                passed += 1
-    line = f'{passed} passed, {failed} failed'
-    print(line + (f', {skipped} skipped' if skipped else ''))
-    return 1 if failed or passed == 0 else 0
+            kind = outcome(case)
+            counts[kind] += 1
+            if kind == 'failed':
+                failures.append(case_name(results_dir, path, case))
+    for failure in failures:
+        print(f'FAILED {failure}')
+    line = f"{counts['passed']} passed, {counts['failed']} failed"
+    print(line + (f", {counts['skipped']} skipped" if counts['skipped'] else ''))
+    return 1 if counts['failed'] or counts['passed'] == 0 else 0
 
 
 if __name__ == '__main__':
