@@ -5,6 +5,7 @@ action, actions/server.py) becomes a job (actions/jobs.py); the drawing
 thread plans it in one place (letters/plan.py) and has its mode
 (motion/modes.py) carry the plan out on the turtle (turtle.py). In timed
 mode, the lab's N is the six calls of lab.py, run as they are written."""
+import signal
 import sys
 import threading
 
@@ -15,7 +16,7 @@ from .actions.jobs import TYPED_AHEAD, Jobs, chatter_request, text_request
 from .actions.server import DrawServer, describe
 from .classroom.diagnosis import why_stopped
 from .classroom.liveness import refuse_a_second
-from .classroom.placement import Placement, Refused, beside_the_handler
+from .classroom.placement import Placement, Refused, waited_at_most
 from .classroom.spares import Spares, draw_in_parallel
 from .letters.font import shown
 from .letters.geometry import PlannedPose
@@ -47,7 +48,7 @@ class TurtleController:
         self.spares = Spares(settings, self.driver.name, Turtle, self.placement.note_spares)
         self.jobs = Jobs()
         self.actions = DrawServer(self.jobs, settings.font)
-        rospy.on_shutdown(beside_the_handler(self.leave))
+        rospy.on_shutdown(waited_at_most(self.leave))
         rospy.Subscriber('chatter', String, self._on_chatter, queue_size=TYPED_AHEAD)
         rospy.Subscriber('~text', String, self._on_text, queue_size=10)
         rospy.Subscriber('~svg', String, lambda m: self.request(SvgFile(m.data), '~svg'),
@@ -129,9 +130,23 @@ class TurtleController:
                 'The next trigger starts a new one.')
 
 
+def shut_down_on_a_thread_of_its_own():
+    """Ctrl-C and SIGTERM start rospy's shutdown on a thread of its own.
+    rospy's handler runs it on the main thread, wherever that was: in the
+    middle of a call to the master (each log line asks the master a
+    parameter), rospy's own cleanup then waits for ever on the lock that
+    call holds (faults test_3c hung so, stopped while saying it waits)."""
+    def on_signal(number, _frame):
+        threading.Thread(target=rospy.signal_shutdown, args=(f'signal-{number}',),
+                         name='shutdown').start()
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, on_signal)
+
+
 def main():
     refuse_a_second('turtlebot_controller')
-    rospy.init_node('turtlebot_controller', argv=quote_unreadable(sys.argv))
+    rospy.init_node('turtlebot_controller', argv=quote_unreadable(sys.argv), disable_signals=True)
+    shut_down_on_a_thread_of_its_own()
     try:
         settings = Settings(rospy.get_param)
         controller = TurtleController(settings)

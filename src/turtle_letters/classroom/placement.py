@@ -16,7 +16,7 @@ from .claims import Claims, Held
 from .diagnosis import CONNECT_SECONDS, not_connected_diagnosis, spawn_refusal
 from .parts import fits_a_line, free_place, letter_bounds, on_canvas, overlaps, part_box, text_width
 
-LEAVE_SECONDS = 5.0     # s rospy's signal handler waits for the shutdown hook (beside_the_handler)
+LEAVE_SECONDS = 5.0     # s a shutdown waits for our hook at most (waited_at_most)
 CLAIM_ATTEMPTS = 20
 
 
@@ -202,14 +202,10 @@ def remove_spares_left_behind(driver, left):
         rospy.loginfo('Removed %s, a spare turtle left behind by an earlier run', spare)
 
 
-def beside_the_handler(hook, seconds=LEAVE_SECONDS):
+def waited_at_most(hook, seconds=LEAVE_SECONDS):
     """`hook`, for rospy.on_shutdown, run on a thread of its own and waited
-    for at most `seconds`. rospy runs its hooks in the signal handler,
-    wherever the main thread was: mid-call to the master (a log line sent
-    to rosout asks it a parameter), a call to the master from the hook
-    waits for ever on the lock that call holds (a fresh run's faults
-    test_3c hung so). Beside, it waits only until the handler returns and
-    that call ends."""
+    for at most `seconds`: a master that stopped answering its calls
+    holds the shutdown up no longer than that."""
     def run():
         leaving = threading.Thread(target=hook, name='leave')
         leaving.start()
