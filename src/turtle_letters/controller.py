@@ -5,7 +5,6 @@ action, actions/server.py) becomes a job (actions/jobs.py); the drawing
 thread plans it in one place (letters/plan.py) and has its mode
 (motion/modes.py) carry the plan out on the turtle (turtle.py). In timed
 mode, the lab's N is the six calls of lab.py, run as they are written."""
-import signal
 import sys
 import threading
 
@@ -23,7 +22,7 @@ from .letters.geometry import PlannedPose
 from .letters.plan import SvgFile, plan_request
 from .letters.sheet import Sheet
 from .motion.control import Cancelled
-from .motion.driver import DrawingAborted, TurtleDriver
+from .motion.driver import DrawingAborted, TurtleDriver, init_node_shut_down_beside_main
 from .motion.modes import MODES
 from .settings import ParameterError, Settings, quote_unreadable
 from .turtle import Turtle, pose_text
@@ -130,23 +129,9 @@ class TurtleController:
                 'The next trigger starts a new one.')
 
 
-def shut_down_on_a_thread_of_its_own():
-    """Ctrl-C and SIGTERM start rospy's shutdown on a thread of its own.
-    rospy's handler runs it on the main thread, wherever that was: in the
-    middle of a call to the master (each log line asks the master a
-    parameter), rospy's own cleanup then waits for ever on the lock that
-    call holds (faults test_3c hung so, stopped while saying it waits)."""
-    def on_signal(number, _frame):
-        threading.Thread(target=rospy.signal_shutdown, args=(f'signal-{number}',),
-                         name='shutdown').start()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, on_signal)
-
-
 def main():
     refuse_a_second('turtlebot_controller')
-    rospy.init_node('turtlebot_controller', argv=quote_unreadable(sys.argv), disable_signals=True)
-    shut_down_on_a_thread_of_its_own()
+    init_node_shut_down_beside_main('turtlebot_controller', quote_unreadable(sys.argv))
     try:
         settings = Settings(rospy.get_param)
         controller = TurtleController(settings)

@@ -1,7 +1,9 @@
 """The turtle's ROS plumbing: its pose stream, its cmd_vel, its pen, its
 spawn and kill, and the canvas. The stop on shutdown lives here, so nothing
-that moves the turtle can leave it coasting."""
+that moves the turtle can leave it coasting, and the way a signal starts
+that shutdown."""
 import collections
+import signal
 import threading
 import time
 import weakref
@@ -281,3 +283,19 @@ def _quietly(call):
         call()
     except Exception:   # the turtle or turtlesim is gone already: nothing to undo
         pass
+
+
+def init_node_shut_down_beside_main(name, argv):
+    """rospy.init_node, with Ctrl-C and SIGTERM starting rospy's shutdown on
+    a thread of its own. rospy's handler runs it on the main thread,
+    wherever that was: in the middle of a call to the master (each log line
+    asks the master a parameter), rospy's own cleanup then waits for ever on
+    the lock that call holds (faults test_3c hung so, stopped while saying
+    it waits)."""
+    rospy.init_node(name, argv=argv, disable_signals=True)
+
+    def on_signal(number, _frame):
+        threading.Thread(target=rospy.signal_shutdown, args=(f'signal-{number}',),
+                         name='shutdown').start()
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, on_signal)
