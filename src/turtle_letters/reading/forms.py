@@ -3,6 +3,7 @@ ways cadets draw it with rotate and move, the Hershey families a cadet may
 draw in (and one's lowercase letters: a name written 'Jo'), and block
 letters by their middle lines; each sampled once in its
 own box (Templates), for recognition.py to stretch onto ink. No ROS here."""
+import math
 import string
 from typing import List, NamedTuple, Tuple
 
@@ -18,12 +19,20 @@ SPARSE = 3          # a candidate's bound is taken on every SPARSE-th of its poi
 
 _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
 _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
+_ARCH = [(0.3 - 0.3 * math.cos(math.radians(a)), 0.7 + 0.3 * math.sin(math.radians(a)))
+         for a in range(0, 181, 15)]      # an A's round top
+_CURL = [(0.27 + 0.23 * math.cos(math.radians(a)), 0.27 + 0.23 * math.sin(math.radians(a)))
+         for a in range(0, -226, -15)]    # a J's hook, on past its half circle
 # How cadets draw letters with rotate and move, beside the font's glyphs:
-# square corners, a K's arms meeting at the stem's middle, an A's bar from a
-# quarter to half its height, an N with level feet, M and N as zigzags (a
-# real class's MF), an I of one stroke, a J barred across its top (another
-# class's Jo). A square-cornered O is an O: no D is drawn with four right angles.
+# square corners, a K's arms meeting at the stem's middle (or stopping short
+# of its corners, a real class's Ko), an A's bar from a quarter to half its
+# height (or its top an arch, a real class's Al), an N with level feet, M
+# and N as zigzags (a real class's MF), an I of one stroke, a J barred
+# across its top (two other classes' Jo, one with its hook curled on up). A
+# square-cornered O is an O: no D is drawn with four right angles. (The
+# recognition benchmark draws each letter's last form here as a cadet's.)
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
+    ('A', [[(0, 0)] + _ARCH + [(0.6, 0)], [(0, 0.45), (0.6, 0.45)]]),   # arched
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.15, 0.5), (0.45, 0.5)]]),
@@ -32,8 +41,10 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('G', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0), (0.6, 0.45), (0.3, 0.45)]]),
     ('I', [[(0, 0), (0, 1)]]),
     ('J', [[(0.6, 1), (0.6, 0), (0, 0), (0, 0.3)]]),
+    ('J', [[(0.05, 1), (0.85, 1)], [(0.5, 1)] + _CURL]),    # barred, its hook curled back up
     ('J', [[(0, 1), (0.6, 1)], [(0.4, 1), (0.4, 0.2), (0.34, 0.06), (0.2, 0), (0.06, 0.06),
                                 (0, 0.2)]]),                              # barred, a real class's
+    ('K', [[(0, 1), (0, 0)], [(0.55, 0.9), (0, 0.5), (0.6, 0.25)]]),    # arms short
     ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
     ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
     ('M', [[(0, 0), (0.175, 1), (0.35, 0), (0.525, 1), (0.7, 0)]]),     # a zigzag, no upright

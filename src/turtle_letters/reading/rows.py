@@ -18,6 +18,7 @@ import string
 from typing import List
 
 import numpy
+from scipy.spatial import cKDTree
 
 from .ink import box, closed, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
@@ -35,6 +36,8 @@ ACROSS = 75         # degrees off a row's slope past which a letter of it lies a
 SQUARE = 60         # degrees apart two turns of a row lie where it may stand either way up
 AS_LOW = 1.3        # a turn leaving a row this share as high as the lowest does: it may lie so
 FAR_OFF = 30        # degrees off level past which, on a tie, neither way up of a row is taken
+CLEAR_LINES = 40    # lines of a row past which its letters are not sought clear of each other
+CLEAR_POINTS = 400  # ... and the points of a line compared, at most
 
 
 class Row:
@@ -138,6 +141,34 @@ def apart(ink):
     if len(lines) < 2 or outline(lines) is None:
         return [group for group, _ in groups]
     return [letter for group, _ in groups for letter in by_edges(group, height)]
+
+
+def clear_of_each_other(ink, height):
+    """The ink's letters where each lies clear of the others, by GAP of the
+    row's `height`, though their spans across overlap (a J's bar reaching
+    over the o after it): lines nearer each other than that are one
+    letter's. Left to right; the ink whole where it has more than
+    CLEAR_LINES lines (the cost is bounded)."""
+    lines = [line for line in ink if line]
+    if len(lines) > CLEAR_LINES:
+        return [lines]
+    near = GAP * height
+    points = [numpy.array(samples([line], near / 4)).reshape(-1, 2) for line in lines]
+    points = [p[::max(1, len(p) // CLEAR_POINTS)] for p in points]     # bounded
+    owner = numpy.repeat(numpy.arange(len(lines)), [len(p) for p in points])
+    pairs = owner[cKDTree(numpy.concatenate(points)).query_pairs(near, output_type='ndarray')]
+    letter = list(range(len(lines)))        # each line's letter: the first line of it
+
+    def first(i):
+        while letter[i] != i:
+            i = letter[i]
+        return i
+    for i, j in numpy.unique(pairs[pairs[:, 0] != pairs[:, 1]], axis=0):
+        letter[first(j)] = first(i)
+    letters = {}
+    for i, line in enumerate(lines):
+        letters.setdefault(first(i), []).append(line)
+    return sorted(letters.values(), key=lambda group: min(p[0] for line in group for p in line))
 
 
 def by_edges(lines, height):
@@ -364,17 +395,22 @@ def _read_letters(row, expected, floor=-1, back=lambda reading: reading):
     """The row's readings, each as `back` turns it back to lie as the ink
     does (the ways are compared so: a letter read level may lie past
     MOST_TILT once turned back, and is then no letter): its letters set
-    apart; or cut looking ahead, and (a row that does not read so) cut
-    letter by letter too, the better kept (_confirmed); or, where as many of its letters read in place so, each
-    letter set apart read whole: a row unfinished (a U where USI was
-    expected) is fewer letters. A way is read whole only where it may
+    apart; or each clear of the others (clear_of_each_other); or cut
+    looking ahead, and (a row that does not read so) cut letter by letter
+    too, the better kept (_confirmed); or, where as many of its letters
+    read in place so, each letter set apart read whole: a row unfinished
+    (a U where USI was expected) is fewer letters. A way is read whole only where it may
     read more letters in place than `floor` and the best way so far
     (_hoped); None where none may."""
     groups = apart(row.ink)
     if len(groups) >= len(expected):
         return [back(row.reading(group, exact=letter))
                 for group, letter in itertools.zip_longest(groups, expected, fillvalue='')]
-    best = None
+    best, clear = None, clear_of_each_other(row.ink, row.height)
+    if len(groups) < len(clear) == len(expected):
+        best = [back(row.reading(part, exact=letter)) for part, letter in zip(clear, expected)]
+        if _score(best, expected)[0] == len(expected):
+            return best
     for ahead in (True, False):
         letters = row.letters(cut(row, expected, ahead))
         beat = floor if best is None else _score(best, expected)[0]

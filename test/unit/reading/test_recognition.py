@@ -42,6 +42,26 @@ def test_an_a_with_its_bar_from_a_quarter_to_half_its_height(bar):
     assert reading.letter == 'A' and reading.best.fit < 0.05, reading.best
 
 
+def test_an_a_with_an_arched_top_and_not_the_arch_without_its_bar():
+    """A real class's Al: an A whose legs stand upright under a round top,
+    drawn as a turtle draws it (up, half a circle turning right, down),
+    its bar after. The arch and legs alone, an n, are no A."""
+    arch = driven([forward(2.1), arc(0.9, -math.pi), forward(2.1)], heading=math.pi / 2)
+    bar = [(0.0, 1.35), (1.8, 1.35)]
+    reading = read([arch, bar])
+    assert reading.letter == 'A' and reading.best.fit < 0.05, reading.best
+    assert read([arch]).letter != 'A'
+
+
+@pytest.mark.parametrize('tilt', [0, -20, 20])
+def test_a_k_whose_arms_stop_short_of_its_corners(tilt):
+    """A real class's Ko: the upper arm ends below the stem's top, the lower
+    a third of the way up."""
+    k = [[(0, 1), (0, 0)], [(0.5, 0.88), (0, 0.5), (0.6, 0.3)]]
+    reading = read(turned([placed(line, 2.0, 2.0, 3.0) for line in k], tilt, (3, 3.5)))
+    assert reading.letter == 'K', reading.best
+
+
 def test_the_labs_own_n_and_a_cadets_level_n():
     lab_n = read([placed(FONT['N'].strokes[0], 5.5, 5.5, 3.0)])
     level_n = read([placed(rounded([(0, 0), (0, 1), (0.7, 0), (0.7, 1)], 0.03), 1, 1, 2.5)])
@@ -159,24 +179,39 @@ def test_m_and_n_drawn_as_zigzags_with_no_upright_leg(letter, zigzag):
     assert reading.letter == letter, reading.best
 
 
-def barred_j(hook_left=True):
+def barred_j(hook_left=True, curl=180):
     """A J with a bar across its top, as people write it: the bar, then the
-    stem down from its middle and a half circle round to the left, in one
-    line, the turtle turning as it moves (`hook_left` False: mirrored)."""
+    stem down from its middle and a half circle round to the left (or on,
+    `curl` degrees round, back up), in one line, the turtle turning as it
+    moves (`hook_left` False: mirrored)."""
     side = 1 if hook_left else -1
     arc = [(0.45 - side * 0.225 * (1 - math.cos(math.radians(a))),
-            0.25 - 0.225 * math.sin(math.radians(a))) for a in range(0, 181, 10)]
+            0.25 - 0.225 * math.sin(math.radians(a))) for a in range(0, curl + 1, 5)]
     return [[(0.05, 1), (0.85, 1)], [(0.45, 1), (0.45, 0.25)] + arc]
 
 
+@pytest.mark.parametrize('curl', [180, 220])
 @pytest.mark.parametrize('tilt', [0, -20, 20])
-def test_a_j_with_a_bar_across_its_top_and_not_mirrored(tilt):
-    """A real class's Jo: a J barred at its top, which no form read."""
+def test_a_j_with_a_bar_across_its_top_and_not_mirrored(tilt, curl):
+    """Two real classes' Jo: a J barred at its top, which no form read, its
+    hook a half circle or curled on back up."""
     def drawn(j):
         return turned([placed(line, 2.0, 2.0, 3.0, 1.2) for line in j], tilt, (3, 3.5))
-    reading = read(drawn(barred_j()))
+    reading = read(drawn(barred_j(curl=curl)))
     assert reading.letter == 'J', reading.best
-    assert read(drawn(barred_j(hook_left=False))).letter != 'J'
+    assert read(drawn(barred_j(hook_left=False, curl=curl))).letter != 'J'
+
+
+@pytest.mark.parametrize('expected, credited', [('JO', 'JO'), ('TO', '?O'), ('JC', 'J?')])
+def test_a_letter_reaching_over_the_next_clear_of_it_leaves_it_its_own(expected, credited):
+    """A real class's Jo: the J's bar reaches on over the o, whose span
+    across it overlaps, but lies clear of it: each is a letter of its own."""
+    j = [placed(line, 2.0, 3.0, 3.0, 1.2) for line in barred_j(curl=220)]
+    o = driven([arc(0.5, 0.97 * math.tau)], 4.6, 3.0)
+    assert max(x for x, _ in j[0]) > min(x for x, _ in o)     # the bar overhangs the o
+    readings = read_row(j + [o], expected)
+    assert ''.join(r.letter if r.letter == e else '?' for r, e in zip(readings, expected)) \
+        == credited
 
 
 def _on_circle(angle, radius, centre=(0.0, 0.0)):
