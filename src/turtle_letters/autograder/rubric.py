@@ -217,7 +217,8 @@ def drawn(readings):
 def by_ocr(facts):
     """Whether the letters are credited on OCR's reading: it reads the
     expected text confidently where the strokes read something else, and
-    the strokes read no other letter cleanly (ocr.supports; the strokes'
+    the strokes read no other letter cleanly that the expected one does not
+    fit cleanly too (ocr.supports; the strokes'
     reading alone never credits a letter it did not read)."""
     return drawn(facts.readings) != facts.expected and facts.ocr is not None and \
         supports(facts.ocr, facts.expected, facts.readings)

@@ -23,7 +23,7 @@ from scipy.ndimage import distance_transform_edt
 from scipy.spatial.distance import directed_hausdorff
 
 from .forms import READABLE, Point, grid_rows, templates
-from .ink import CELL, WIDEST, box, boxed, outline, sampled, thinned, turned
+from .ink import CELL, WIDEST, box, boxed, closed, outline, sampled, thinned, turned
 
 LEVEL = 0.03        # a fit this good level is not tried tilted
 TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
@@ -261,7 +261,14 @@ def _read_either(ink, letters, tilts, finer, refined):
         return _read(ink, letters, tilts, finer, refined)
     reading = _read(middle, letters, tilts, finer, refined)
     if reading.best is not None and reading.best.fit <= reading.best.readable:
-        return reading      # read, or two letters fit it alike: it says neither
+        height = box([p for line in ink for p in line])[3]
+        if all(closed(line, height) for line in ink):
+            return reading      # read, or two letters fit it alike: it says neither
+        # ink off the closed lines is no part of the middle line (a duplex Q's
+        # short tail: the middle line is an O): the ink as drawn, where it fits better
+        drawn = _read(ink, letters, tilts, finer, refined)
+        better = drawn.letter is not None and drawn.best.fit + AMBIGUOUS <= reading.best.fit
+        return drawn if better else reading
     # a cadet's loop back to its start (a B's stem and two round bowls) may
     # band like an outline: where its middle line fits no letter, its strokes are read
     drawn = _read(ink, letters, tilts, finer, refined)
