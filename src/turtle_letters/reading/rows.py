@@ -22,7 +22,7 @@ from scipy.spatial import cKDTree
 
 from .ink import box, closed, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
-from .recognition import AMBIGUOUS, MOST_TILT, SAMPLE, Reading, read
+from .recognition import MOST_TILT, SAMPLE, Reading, read
 
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
@@ -49,20 +49,6 @@ class Row:
         self.ink = ink
         self.x0, _, self.width, self.height = box([p for line in ink for p in line])
         self._fits, self._readings = {}, {}
-
-    def _best_alone(self, part, reading, alone):
-        """The letter `reading` (of `part` among all 26) reads, or the one
-        expected where, read alone (`alone`, its best Fit), it fits better
-        than the letter read does alone, by AMBIGUOUS: read among 26, a
-        letter's tilts are refined only where it is among the best few at
-        the first tilts (a roman Q read as an O within 3.0% of its height,
-        and alone as a Q within 1.4%)."""
-        best = reading.best
-        if reading.letter is None or alone is None or alone.fit >= best.fit or \
-                alone.fit > alone.readable:
-            return reading.letter       # none read (a doubtful box, two alike) stays none
-        rival = self.reading(part, best.letter).best
-        return alone.letter if alone.fit + AMBIGUOUS <= rival.fit else reading.letter
 
     @functools.cached_property
     def fine(self):
@@ -117,8 +103,7 @@ class Row:
         than the best no better than the best's only; OCR may credit the
         letter expected): none where it stands less than SMALL of the
         row's height, nor less than SHORT unless it fits within CLEAN (its
-        best fit kept, for the report); the letter expected where alone it
-        fits best (_best_alone). (A name's later letters written
+        best fit kept, for the report). (A name's later letters written
         small, 'Jo' or 'Ri', are its letters; the end of a curve beside a
         whole letter is no I.)"""
         key = (tuple(tuple(tuple(p) for p in line) for line in part), letters, exact)
@@ -128,12 +113,11 @@ class Row:
             alone = self.reading(part, exact).best if exact and reading.letter != exact else None
             if alone:
                 fits = {**fits, exact: alone}
-            letter = self._best_alone(part, reading, alone)
-            best = alone if letter != reading.letter else reading.best
+            letter = reading.letter
             height = self.share(part)
-            if height < SMALL or (height < SHORT and best.fit > CLEAN):
+            if height < SMALL or (height < SHORT and reading.best.fit > CLEAN):
                 letter = None
-            self._readings[key] = Reading(letter, best, fits)
+            self._readings[key] = Reading(letter, reading.best, fits)
         return self._readings[key]
 
 
