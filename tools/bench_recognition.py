@@ -7,11 +7,13 @@ of DejaVu's bold capitals (fonttools, fonts-dejavu-core), and the rotate-
 and-move forms cadets draw (forms.VARIANTS); each at a random tilt
 (+-45 degrees), aspect (0.5 to 2), size (0.5 m to the canvas) and place,
 walked at a random speed in turtlesim's 16 ms steps; rows of 2 or 3 letters
-touching or nearly. Each drawing is graded against its own letters, and
-against another letter or row: a wrong letter credited, the figure that
-must stay 0, is a drawing any letter of which is credited where another
-was drawn (the whole text, or one letter in its place: a row that does
-not read whole earns a share for each letter read in place). Figures for the strokes' reader, OCR, and the two combined
+touching or nearly. Each drawing is graded against its own letters,
+against another letter or row at random, and against each text either
+reader takes it for (its best-fitting letters, OCR's text): a wrong letter
+credited, the figure that must stay 0, is a drawing any letter of which is
+credited where another was drawn (the whole text, or one letter in its
+place: a row that does not read whole earns a share for each letter read
+in place). Figures for the strokes' reader, OCR, and the two combined
 as the grader combines them.
 """
 import argparse
@@ -77,15 +79,19 @@ def drawn(glyphs, text, rng):
 
 def readers(ink, expected):
     """(the letters the strokes read, '?' for none; whether OCR read the
-    text; seconds of each), both asked: the figures of each alone. (The
-    grader asks OCR only where the strokes do not read the expected text:
-    the two combined count its time only there.)"""
+    text; seconds of each; the texts the two take the ink for where not
+    `expected`), both asked: the figures of each alone. (The grader asks
+    OCR only where the strokes do not read the expected text: the two
+    combined count its time only there.)"""
     started = time.monotonic()
     readings = read_row(ink, expected)
     strokes = ''.join(r.letter or '?' for r in readings)
     middle = time.monotonic()
-    ocr = supports(read_text(ink, expected), expected, readings)
-    return strokes, ocr, middle - started, time.monotonic() - middle
+    ocr = read_text(ink, expected)
+    seconds = (middle - started, time.monotonic() - middle)
+    taken = {''.join(r.letter or (r.best.letter if r.best else '?') for r in readings), ocr.text}
+    taken = {text for text in taken if len(text) == len(expected) and text.isalpha()}
+    return strokes, supports(ocr, expected, readings), seconds, taken - {expected}
 
 
 def wrong_in_place(read, drawn, other):
@@ -95,14 +101,22 @@ def wrong_in_place(read, drawn, other):
     return any(r == o != d for r, o, d in zip(read, other, drawn))
 
 
+def credited_wrongly(ink, text, other):
+    """(by the strokes, by OCR): whether `ink`, a drawing of `text`,
+    graded against `other`, earns a letter it does not draw."""
+    read, ocr, _, _ = readers(ink, other)
+    return wrong_in_place(read, text, other), ocr
+
+
 _fonts = []     # each worker's corpus fonts, loaded once
 
 
 def one_drawing(job):
     """Drawing n of the corpus (its own random stream, whatever the
-    workers), read against its own text and against another: (family,
-    the text it was wrong against, and each reader's right, wrong and
-    seconds)."""
+    workers), read against its own text, against another at random, and
+    against each text the readers take it for (a cadet's D read as an O is
+    graded against an O where the roster says O): (family, the texts it
+    was wrong against, and each reader's right, wrong and seconds)."""
     n, singles, seed = job
     if not _fonts:
         _fonts.extend(corpus_fonts())
@@ -114,12 +128,14 @@ def one_drawing(job):
     while other == text:
         other = ''.join(rng.choice(string.ascii_uppercase) for _ in text)
     ink = drawn(glyphs, text, rng)
-    read, o, s_time, o_time = readers(ink, text)
-    read_other, wo, _, _ = readers(ink, other)
-    s, ws = read == text, wrong_in_place(read_other, text, other)
-    return family, f'{text} as {other}', {
-        'strokes': (s, ws, s_time), 'ocr': (o, wo, o_time),
-        'both': (s or o, ws or wo, s_time + (0.0 if s else o_time))}
+    read, o, (s_time, o_time), taken = readers(ink, text)
+    wrong = {against: credited_wrongly(ink, text, against) for against in {other} | taken}
+    ws = [against for against, (by_strokes, _) in wrong.items() if by_strokes]
+    wo = [against for against, (_, by_ocr) in wrong.items() if by_ocr]
+    s = read == text
+    return family, f'{text} as {"/".join(sorted(set(ws + wo)) or [other])}', {
+        'strokes': (s, bool(ws), s_time), 'ocr': (o, bool(wo), o_time),
+        'both': (s or o, bool(ws or wo), s_time + (0.0 if s else o_time))}
 
 
 def recognition_run(singles=2000, rows=500, seed=1, jobs=1):
