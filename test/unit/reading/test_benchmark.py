@@ -1,0 +1,34 @@
+"""The recognition benchmark (tools/bench_recognition.py) grades each
+drawing against what the readers take it for: a confusion of the
+readers' counts as the wrong credit it would be in a class."""
+import os
+import sys
+
+from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
+from turtle_letters.reading.ink import turned
+
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', '..', 'tools'))
+import bench_recognition  # noqa: E402  (a tool, not a module of the package)
+
+
+def wide_outline(letter, wide=1.5, tilt=15):
+    glyph = outline_glyphs(DEJAVU_BOLD[0])[letter]
+    return turned([[(3.8 * wide * x, 3.8 * y) for x, y in line] for line in glyph], tilt, (0, 0))
+
+
+def test_a_drawing_is_graded_against_the_letter_the_strokes_take_it_for():
+    """DejaVu Sans Bold's D outline half as wide again: its middle line
+    fits an O best, 11% of its height off. The benchmark grades it as an O
+    too, and finds no O credited (the strokes read no letter so roughly:
+    recognition._said_cleanly); a grade against a letter at random would
+    have tried the O once in 25."""
+    ink = wide_outline('D')
+    _, _, _, taken = bench_recognition.readers(ink, 'D')
+    assert 'O' in taken
+    assert bench_recognition.credited_wrongly(ink, 'D', 'O') == (False, False)
+
+
+def test_a_letter_credited_in_place_where_another_was_drawn_is_wrong():
+    assert bench_recognition.wrong_in_place('ZF', 'ZT', 'ZF')
+    assert not bench_recognition.wrong_in_place('Z?', 'ZT', 'ZF')
+    assert not bench_recognition.wrong_in_place('ZT', 'ZT', 'ZT')
