@@ -22,7 +22,7 @@ import numpy
 from scipy.ndimage import distance_transform_edt
 from scipy.spatial.distance import directed_hausdorff
 
-from .forms import CLEAN, READABLE, Point, grid_rows, templates
+from .forms import READABLE, Point, grid_rows, templates
 from .ink import CELL, WIDEST, box, boxed, closed, outline, sampled, thinned, turned
 
 LEVEL = 0.03        # a fit this good level is not tried tilted
@@ -263,29 +263,16 @@ def _read_either(ink, letters, tilts, finer, refined):
     if reading.best is not None and reading.best.fit <= reading.best.readable:
         height = box([p for line in ink for p in line])[3]
         if all(closed(line, height) for line in ink):
-            return _said_cleanly(reading)
+            return reading      # read, or two letters fit it alike: it says neither
         # ink off the closed lines is no part of the middle line (a duplex Q's
         # short tail: the middle line is an O): the ink as drawn, where it fits better
         drawn = _read(ink, letters, tilts, finer, refined)
         better = drawn.letter is not None and drawn.best.fit + AMBIGUOUS <= reading.best.fit
-        return drawn if better else _said_cleanly(reading)
+        return drawn if better else reading
     # a cadet's loop back to its start (a B's stem and two round bowls) may
     # band like an outline: where its middle line fits no letter, its strokes are read
-    drawn = _said_cleanly(_read(ink, letters, tilts, finer, refined))
+    drawn = _read(ink, letters, tilts, finer, refined)
     return drawn if drawn.letter is not None else reading
-
-
-def _said_cleanly(reading):
-    """A reading of ink that bands like an outline, by its middle line or
-    its edge: its letter only where it fits within CLEAN. A bold letter's
-    middle line is a crude stroke, and its edge is none: further off, they
-    fit another letter as often as their own (DejaVu's bold outlines in the
-    recognition benchmark: 23 of 444 read as another letter, a D as an O, a
-    J's edge as a D, all but 3 further off than CLEAN); OCR, which sees the
-    letter filled, decides (rubric.by_ocr)."""
-    if reading.letter is None or reading.best.fit <= CLEAN:
-        return reading
-    return Reading(None, reading.best, reading.fits)
 
 
 def _read(ink, letters, tilts, finer, refined) -> Reading:
