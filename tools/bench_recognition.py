@@ -145,12 +145,12 @@ def recognition_run(singles=2000, rows=500, seed=1, jobs=1):
     by_family, wrongs = {}, []
     work = [(n, singles, seed) for n in range(singles + rows)]
     with multiprocessing.Pool(jobs) as pool:
-        for family, texts, results in pool.imap(one_drawing, work, chunksize=8):
+        for n, (family, texts, results) in enumerate(pool.imap(one_drawing, work, chunksize=8)):
             for name, (right, wrong, seconds) in results.items():
                 tally[name]['right'] += right
                 tally[name]['wrong'] += wrong
                 tally[name]['seconds'].append(seconds)
-            wrongs += [f'{family} {texts}'] if results['both'][1] else []
+            wrongs += [f'drawing {n}, {family} {texts}'] if results['both'][1] else []
             by_family.setdefault(family, []).append(results['both'][0])
     total = singles + rows
     return dict(singles=singles, rows=rows, wrongs=wrongs, readers={

@@ -7,7 +7,8 @@ strokes, and how far the strokes are from anything drawn.
 The worse of the two, as a share of the letter's height, is the fit; the
 best-fitting candidate is the letter, if its fit is at most READABLE and
 no other letter's is within AMBIGUOUS of it (a block J's middle line fit
-an I 0.05 of its height off, and a J 0.051: that ink says neither).
+an I 0.05 of its height off, and a J 0.051: that ink says neither), nor,
+for ink that bands like an outline read past CLEAN, within RIVAL times it.
 What is read is ink: the unbroken lines a turtle drew with its pen down,
 as many as there are. Travel with the pen up is no part of it; a cadet who
 retraces strokes to reach the next one loses nothing either, since
@@ -22,7 +23,7 @@ import numpy
 from scipy.ndimage import distance_transform_edt
 from scipy.spatial.distance import directed_hausdorff
 
-from .forms import READABLE, Point, grid_rows, templates
+from .forms import CLEAN, READABLE, Point, grid_rows, templates
 from .ink import CELL, WIDEST, box, boxed, closed, outline, sampled, thinned, turned
 
 LEVEL = 0.03        # a fit this good level is not tried tilted
@@ -33,6 +34,10 @@ MOST_TILT = max(TILTS) + sum(FINER)     # degrees off level a letter is read at,
 SAMPLE = 0.02       # share of the height between compared points
 HOPELESS = READABLE  # a candidate straying farther is not fitted exactly: it cannot read
 AMBIGUOUS = 0.005   # another letter fitting within this of the best: the two cannot be told apart
+# Ink that bands like an outline, read past CLEAN, another letter fitting within RIVAL
+# times as far off: a bold letter's middle line or edge is a crude stroke, and OCR
+# decides (a DejaVu Sans Bold D half as wide again is an O 11% of its height off, a D 12%).
+RIVAL = 1.4
 WITNESSES = 4       # the ink cells farthest from the last few candidates fitted, kept
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
 # A box this wide for its height is a block I's edge and a square O alike: no letter.
@@ -259,7 +264,7 @@ def _read_either(ink, letters, tilts, finer, refined):
     middle = outline(ink)
     if middle is None:
         return _read(ink, letters, tilts, finer, refined)
-    reading = _read(middle, letters, tilts, finer, refined)
+    reading = _unsure(_read(middle, letters, tilts, finer, refined))
     if reading.best is not None and reading.best.fit <= reading.best.readable:
         height = box([p for line in ink for p in line])[3]
         if all(closed(line, height) for line in ink):
@@ -271,8 +276,19 @@ def _read_either(ink, letters, tilts, finer, refined):
         return drawn if better else reading
     # a cadet's loop back to its start (a B's stem and two round bowls) may
     # band like an outline: where its middle line fits no letter, its strokes are read
-    drawn = _read(ink, letters, tilts, finer, refined)
+    drawn = _unsure(_read(ink, letters, tilts, finer, refined))
     return drawn if drawn.letter is not None else reading
+
+
+def _unsure(reading):
+    """A `reading` of ink that bands like an outline (its middle line, or its
+    edge as drawn), no letter where it is past CLEAN and another letter fits
+    within RIVAL times as far off."""
+    best = reading.best
+    if reading.letter and best.fit > CLEAN and any(
+            f.fit <= RIVAL * best.fit for f in reading.fits.values() if f is not best):
+        return Reading(None, best, reading.fits)
+    return reading
 
 
 def _read(ink, letters, tilts, finer, refined) -> Reading:

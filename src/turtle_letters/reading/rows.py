@@ -463,6 +463,18 @@ def _read_blind(row, expected, k, ahead):
     return True
 
 
+def read_blind(ink, count):
+    """The row of `count` letters as a TA reads it not knowing the roster,
+    at its likelier level (levels): its letters set apart, or cut with ANY
+    letter at every place (not looking ahead). (Cut level, a row of NB
+    tilted 25 degrees has a sliver of its N that is an I.)"""
+    row = row_of(levels(without_specks(ink), count)[0][2])
+    groups = apart(row.ink)
+    parts = groups if len(groups) >= count else \
+        [alone for alone, _ in row.letters(cut(row, ANY * count, ahead=False))]
+    return [row.reading(part) for part in parts]
+
+
 def _hoped(row, letters, expected):
     """How many of `letters` ((alone, shared) each) may read as expected in
     place, at most: those that read so as their expected letter alone."""

@@ -105,6 +105,26 @@ def test_a_row_read_whole_as_plainly_another_text_is_not_cut_into_the_one_expect
     assert not supports(reading, 'QY', read_row(ink, 'QY')), reading
 
 
+def test_a_row_the_strokes_cut_blind_read_as_another_text_is_not_credited_by_ocr():
+    """A roman triplex UJK, touching, 0.87 times as wide, 6.9 m long,
+    tilted 2.7 degrees, walked in turtlesim's steps: OCR reads UIK as it
+    lies, 89% sure. Cut for UIK, the strokes read no letter in the I's
+    place; cut not knowing the letters expected, they read a J there within
+    3% of its height. They object, and UIK is not credited (the recognition
+    benchmark credited it); the UJK drawn reads."""
+    from turtle_letters.reading.rows import read_row
+    ink = touching('rowmant', 'UJK', 0.8671, gap=0.0009)
+    xs, ys = [p[0] for s in ink for p in s], [p[1] for s in ink for p in s]
+    size = 6.927 / max(max(xs) - min(xs), max(ys) - min(ys))
+    ink = [walked(s, 0.0192) for s in turned(
+        [[((px - min(xs)) * size, (py - min(ys)) * size) for px, py in s] for s in ink],
+        2.73, (0.0, 0.0))]
+    reading = read_text(ink, 'UIK')
+    assert (reading.text, reading.objection) == ('UIK', 'J in place of I'), reading
+    assert not supports(reading, 'UIK', read_row(ink, 'UIK'))
+    assert ''.join(r.letter or '?' for r in read_row(ink, 'UJK')) == 'UJK'
+
+
 def walked(line, step):
     """A polyline as a turtle leaves it: a point every `step` m along it."""
     points = [line[0]]
