@@ -26,7 +26,7 @@ import time
 
 from turtle_letters.reading.forms import VARIANTS
 from turtle_letters.reading.ink import turned
-from turtle_letters.reading.ocr import read_text, supports
+from turtle_letters.reading.ocr import read_text, supports, told_apart
 from turtle_letters.reading.rows import read_row
 from turtle_letters.letters.hershey import load_font
 from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
@@ -78,20 +78,27 @@ def drawn(glyphs, text, rng):
 
 
 def readers(ink, expected):
-    """(the letters the strokes read, '?' for none; whether OCR read the
-    text; seconds of each; the texts the two take the ink for where not
-    `expected`), both asked: the figures of each alone. (The grader asks
-    OCR only where the strokes do not read the expected text: the two
-    combined count its time only there.)"""
+    """(the letters the strokes read, '?' for none; the letters the grader
+    credits them with, OCR telling apart two letters they see cleanly
+    (ocr.told_apart); whether OCR read the text; seconds of each; the texts
+    the two take the ink for where not `expected`), both asked: the figures
+    of each alone. (The grader asks OCR only where the strokes do not read
+    the expected text: the two combined count its time only there.)"""
     started = time.monotonic()
     readings = read_row(ink, expected)
-    strokes = ''.join(r.letter or '?' for r in readings)
+    told = told_apart(ink, readings)    # timed with the strokes: the grader always asks
     middle = time.monotonic()
     ocr = read_text(ink, expected)
     seconds = (middle - started, time.monotonic() - middle)
-    taken = {''.join(r.letter or (r.best.letter if r.best else '?') for r in readings), ocr.text}
+    taken = {_letters(readings, guessed=True), ocr.text}
     taken = {text for text in taken if len(text) == len(expected) and text.isalpha()}
-    return strokes, supports(ocr, expected, readings), seconds, taken - {expected}
+    return _letters(readings), _letters(told), supports(ocr, expected, told), seconds, \
+        taken - {expected}
+
+
+def _letters(readings, guessed=False):
+    """The letters read, '?' for none (`guessed`: the best-fitting letter instead)."""
+    return ''.join(r.letter or (r.best.letter if guessed and r.best else '?') for r in readings)
 
 
 def wrong_in_place(read, drawn, other):
@@ -102,10 +109,11 @@ def wrong_in_place(read, drawn, other):
 
 
 def credited_wrongly(ink, text, other):
-    """(by the strokes, by OCR): whether `ink`, a drawing of `text`,
-    graded against `other`, earns a letter it does not draw."""
-    read, ocr, _, _ = readers(ink, other)
-    return wrong_in_place(read, text, other), ocr
+    """(by the strokes, by OCR, by the strokes as the grader credits them):
+    whether `ink`, a drawing of `text`, graded against `other`, earns a
+    letter it does not draw."""
+    read, told, ocr, _, _ = readers(ink, other)
+    return wrong_in_place(read, text, other), ocr, wrong_in_place(told, text, other)
 
 
 _fonts = []     # each worker's corpus fonts, loaded once
@@ -128,14 +136,15 @@ def one_drawing(job):
     while other == text:
         other = ''.join(rng.choice(string.ascii_uppercase) for _ in text)
     ink = drawn(glyphs, text, rng)
-    read, o, (s_time, o_time), taken = readers(ink, text)
+    read, told, o, (s_time, o_time), taken = readers(ink, text)
     wrong = {against: credited_wrongly(ink, text, against) for against in {other} | taken}
-    ws = [against for against, (by_strokes, _) in wrong.items() if by_strokes]
-    wo = [against for against, (_, by_ocr) in wrong.items() if by_ocr]
+    ws = [against for against, (by_strokes, _, _) in wrong.items() if by_strokes]
+    wo = [against for against, (_, by_ocr, _) in wrong.items() if by_ocr]
+    wt = [against for against, (_, _, by_told) in wrong.items() if by_told]
     s = read == text
-    return family, f'{text} as {"/".join(sorted(set(ws + wo)) or [other])}', {
+    return family, f'{text} as {"/".join(sorted(set(wt + wo)) or [other])}', {
         'strokes': (s, bool(ws), s_time), 'ocr': (o, bool(wo), o_time),
-        'both': (s or o, bool(ws or wo), s_time + (0.0 if s else o_time))}
+        'both': (told == text or o, bool(wt or wo), s_time + (0.0 if told == text else o_time))}
 
 
 def recognition_run(singles=2000, rows=500, seed=1, jobs=1):

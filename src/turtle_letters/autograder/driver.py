@@ -19,7 +19,7 @@ import time
 import traceback
 
 from ..isolation.files import shown
-from ..reading.ocr import read_text
+from ..reading.ocr import read_text, told_apart
 from ..reading.rows import read_row
 from . import observations as seen
 from . import reports, rubric as rubrics, session, submission
@@ -103,10 +103,11 @@ def observed(expected, run, rubric):
 
 def read(drawing, expected):
     """(the strokes' readings, OCR's or None): OCR, the slower reader, is
-    asked only where the strokes do not read what was expected."""
+    asked only where the strokes do not read what was expected, or see
+    another letter as plainly (told_apart)."""
     if drawing is None or not drawing.strokes:
         return [], None
-    readings = read_row(drawing.strokes, expected)
+    readings = told_apart(drawing.strokes, read_row(drawing.strokes, expected))
     if rubrics.drawn(readings) == expected:
         return readings, None
     return readings, read_text(drawing.strokes, expected)

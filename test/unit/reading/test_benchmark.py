@@ -24,9 +24,9 @@ def test_a_drawing_is_graded_against_the_letter_the_strokes_take_it_for():
     letter they cannot tell from another (recognition.RIVAL; before, this
     O was credited), and OCR reads no O."""
     ink = wide_outline('D')
-    _, _, _, taken = bench_recognition.readers(ink, 'D')
+    _, _, _, _, taken = bench_recognition.readers(ink, 'D')
     assert 'O' in taken
-    assert bench_recognition.credited_wrongly(ink, 'D', 'O') == (False, False)
+    assert bench_recognition.credited_wrongly(ink, 'D', 'O') == (False, False, False)
 
 
 def test_a_letter_credited_in_place_where_another_was_drawn_is_wrong():
