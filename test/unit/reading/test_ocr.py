@@ -99,12 +99,7 @@ def test_a_letter_another_fits_cleanly_too_is_kept_where_ocr_reads_that_one_only
     reading of the ink as it lies tells two letters apart: the Z reads."""
     from turtle_letters.reading.forms import CLEAN
     from turtle_letters.reading.rows import read_row
-    ink = touching('rowmand', 'Z', 1.9252)
-    xs, ys = [p[0] for s in ink for p in s], [p[1] for s in ink for p in s]
-    size = 9.284 / max(max(xs) - min(xs), max(ys) - min(ys))
-    ink = [walked(s, 0.0172) for s in turned(
-        [[((px - min(xs)) * size, (py - min(ys)) * size) for px, py in s] for s in ink],
-        41.34, (0.0, 0.0))]
+    ink = as_the_benchmark_draws(touching('rowmand', 'Z', 1.9252), 9.284, 41.34, 0.0172)
     strokes = read_row(ink, 'Z')
     assert strokes[0].letter == 'Z' and strokes[0].fits['N'].fit <= CLEAN
     assert read_text(ink, 'N').tilt != 0
@@ -136,16 +131,23 @@ def test_a_row_the_strokes_cut_blind_read_as_another_text_is_not_credited_by_ocr
     3% of its height. They object, and UIK is not credited (the recognition
     benchmark credited it); the UJK drawn reads."""
     from turtle_letters.reading.rows import read_row
-    ink = touching('rowmant', 'UJK', 0.8671, gap=0.0009)
-    xs, ys = [p[0] for s in ink for p in s], [p[1] for s in ink for p in s]
-    size = 6.927 / max(max(xs) - min(xs), max(ys) - min(ys))
-    ink = [walked(s, 0.0192) for s in turned(
-        [[((px - min(xs)) * size, (py - min(ys)) * size) for px, py in s] for s in ink],
-        2.73, (0.0, 0.0))]
+    ink = as_the_benchmark_draws(touching('rowmant', 'UJK', 0.8671, gap=0.0009), 6.927, 2.73,
+                                 0.0192)
     reading = read_text(ink, 'UIK')
     assert (reading.text, reading.objection) == ('UIK', 'J in place of I'), reading
     assert not supports(reading, 'UIK', read_row(ink, 'UIK'))
     assert ''.join(r.letter or '?' for r in read_row(ink, 'UJK')) == 'UJK'
+
+
+def as_the_benchmark_draws(ink, longest, tilt, step):
+    """`ink` made `longest` m at its longest side, turned `tilt` degrees
+    about its corner and walked in `step` m steps, as the recognition
+    benchmark draws (tools/bench_recognition.drawn)."""
+    xs, ys = [p[0] for s in ink for p in s], [p[1] for s in ink for p in s]
+    size = longest / max(max(xs) - min(xs), max(ys) - min(ys))
+    return [walked(s, step) for s in turned(
+        [[((px - min(xs)) * size, (py - min(ys)) * size) for px, py in s] for s in ink],
+        tilt, (0.0, 0.0))]
 
 
 def walked(line, step):
