@@ -328,14 +328,18 @@ def row_slopes(ink):
 
 
 def _seen(ink, count):
-    """How many letters of any kind `ink`, as it lies, reads as a row of
-    `count`: its letters set apart, or cut letter by letter with ANY
+    """How many letters of any kind `ink`, as it lies, reads as a row of `count`."""
+    return sum(reading.letter is not None for reading in _blind(row_of(ink), count))
+
+
+def _blind(row, count):
+    """The readings of `row` (a Row) as it lies, as a row of `count` letters
+    not known: its letters set apart, or cut letter by letter with ANY
     letter at each place."""
-    row = row_of(ink)
     groups = apart(row.ink)
     parts = groups if len(groups) >= count else \
         [alone for alone, _ in row.letters(cut(row, ANY * count, ahead=False))]
-    return sum(row.reading(part).letter is not None for part in parts)
+    return [row.reading(part) for part in parts]
 
 
 def read_row(ink, expected='') -> List[Reading]:
@@ -447,12 +451,12 @@ def _confirmed(row, expected, readings, ahead):
     kept = []
     for k, (reading, letter) in enumerate(zip(readings, expected)):
         doubted = reading.letter == letter and (
-            reading.best.fit > CLEAN or not _read_blind(row, expected, k, ahead))
+            reading.best.fit > CLEAN or not _reads_blind(row, expected, k, ahead))
         kept.append(Reading(None, reading.best, reading.fits) if doubted else reading)
     return kept
 
 
-def _read_blind(row, expected, k, ahead):
+def _reads_blind(row, expected, k, ahead):
     """Whether letter k of `expected` reads in its place where the row is
     cut with ANY letter there, and where it is cut with ANY letter at every
     place (each alone let a wrong letter through that the other stopped)."""
@@ -465,14 +469,9 @@ def _read_blind(row, expected, k, ahead):
 
 def read_blind(ink, count):
     """The row of `count` letters as a TA reads it not knowing the roster,
-    at its likelier level (levels): its letters set apart, or cut with ANY
-    letter at every place (not looking ahead). (Cut level, a row of NB
-    tilted 25 degrees has a sliver of its N that is an I.)"""
-    row = row_of(levels(without_specks(ink), count)[0][2])
-    groups = apart(row.ink)
-    parts = groups if len(groups) >= count else \
-        [alone for alone, _ in row.letters(cut(row, ANY * count, ahead=False))]
-    return [row.reading(part) for part in parts]
+    at its likelier level (levels; cut level as well, a row of NB tilted
+    25 degrees has a sliver of its N that is an I)."""
+    return _blind(row_of(levels(without_specks(ink), count)[0][2]), count)
 
 
 def _hoped(row, letters, expected):
