@@ -78,7 +78,7 @@ def test_ocr_tells_apart_two_letters_the_strokes_both_see_cleanly(aspect, tilt):
     strokes do not contradict it, and the J is credited (the recognition
     benchmark lost three such J's). Graded as an I, the strokes' I is
     dropped (told_apart: OCR reads the J level) and nothing is credited
-    (the benchmark credited two such I's)."""
+    (the benchmark credited three such I's; two now earn nothing)."""
     from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
     from turtle_letters.reading.forms import CLEAN
     from turtle_letters.reading.rows import read_row
