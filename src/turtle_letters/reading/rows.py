@@ -18,6 +18,8 @@ import string
 from typing import List
 
 import numpy
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from .ink import box, closed, inside, outline, samples, turned
@@ -157,17 +159,12 @@ def clear_of_each_other(ink, height):
     points = [p[::max(1, len(p) // CLEAR_POINTS)] for p in points]     # bounded
     owner = numpy.repeat(numpy.arange(len(lines)), [len(p) for p in points])
     pairs = owner[cKDTree(numpy.concatenate(points)).query_pairs(near, output_type='ndarray')]
-    letter = list(range(len(lines)))        # each line's letter: the first line of it
-
-    def first(i):
-        while letter[i] != i:
-            i = letter[i]
-        return i
-    for i, j in numpy.unique(pairs[pairs[:, 0] != pairs[:, 1]], axis=0):
-        letter[first(j)] = first(i)
+    near_lines = coo_matrix((numpy.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
+                            shape=(len(lines), len(lines)))
+    _, letter = connected_components(near_lines, directed=False)    # each line's letter
     letters = {}
-    for i, line in enumerate(lines):
-        letters.setdefault(first(i), []).append(line)
+    for line, k in zip(lines, letter):
+        letters.setdefault(k, []).append(line)
     return sorted(letters.values(), key=lambda group: min(p[0] for line in group for p in line))
 
 
