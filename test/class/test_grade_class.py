@@ -38,7 +38,9 @@ CONCLUSIONS = {
     'c07_quinn': ('Q', 'O', 'fail', 'drew O, expected Q'),
     'c08_tariq': ('T', '', 'fail', 'no ink was driven: 3 teleports laid all there is'),
     'c09_fatima': ('F', '', 'fail', 'nothing was drawn'),
-    'c10_sam': ('S', '', 'fail', f'no package.xml in {SUBMISSIONS}/c10_sam'),
+    # a script and no package.xml: wrapped in a package of the grader's and run, as a
+    # TA runs it; it prints, and draws nothing
+    'c10_sam': ('S', '', 'fail', f'no package.xml in {SUBMISSIONS}/c10_sam: nothing a catkin'),
     'c11_zoe': ('Z', '', 'fail', 'no submission'),
     'c12_ursula': ('U', 'I', 'fail', 'turtlesim was cleared'),     # the canvas left: one stroke
     'c13_victor': ('V', 'V', 'pass', 'drives the turtle and published "P"'),

@@ -20,8 +20,8 @@ from . import observations as seen
 from .failures import talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, Reader, RunningScripts
 from .rubric import Limits
-from .submission import (MAX_NODES, Package, bare_shell, copy, made_executable, python_scripts,
-                         scripts, started_packages)
+from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
+                         python_scripts, scripts, started_packages, wrap)
 from .world import Lab, course_environment, stand_in, stand_in_started
 
 POLL = 0.1                  # s between looks at what the watcher saw
@@ -89,6 +89,8 @@ def prepare(package, work):
     for folder in ('ws/src', 'home', 'tmp', 'bin'):
         os.makedirs(os.path.join(work, folder), exist_ok=True)
     copied = copy(package, os.path.join(work, 'ws'))
+    if package.loose:
+        wrap(copied)
     os.symlink('/usr/bin/python3', os.path.join(work, 'bin', 'python'))
     return made_executable(copied)
 
@@ -155,7 +157,9 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     in `box`; with a TA's fallbacks, each costing `launches` alone and said
     there: scripts handed in without the execute bit run all the same, and
     a launch file that cannot start its nodes (a wrong pkg or type) gives
-    way to the package's executables, started as without a launch file."""
+    way to the package's executables, started as without a launch file.
+    Scripts handed in without a package.xml are wrapped in one and run,
+    costing `builds` alone."""
     result = Run(package)
     made = prepare(package, box.work)
     stand_in(box.work)
@@ -179,6 +183,11 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
         result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
                                     f'the grader made {"them" if len(made) > 1 else "it"} '
                                     f'executable, as a TA would', result.launch.seconds)
+    if package.loose and result.build.ok:
+        result.build = Step(False, f'no package.xml in {package.folder}: nothing a catkin '
+                                   f'workspace builds; the grader wrapped its files in a package '
+                                   f'({LOOSE}) and ran its scripts, as a TA would',
+                            result.build.seconds)
     return result
 
 

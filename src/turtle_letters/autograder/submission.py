@@ -1,5 +1,6 @@
 """A cadet's submission as handed in: the catkin package somewhere inside
-their folder, its name, and the launch file the lab runs. No ROS here: the
+their folder (or, scripts handed in without one, a package the grader
+wraps them in), its name, and the launch file the lab runs. No ROS here: the
 files are read as plain XML, never run (a launch file's $(eval) is Python).
 """
 import os
@@ -20,6 +21,7 @@ INCLUDE_DEPTH = 8        # launch files within launch files followed
 DEPENDS = ('depend', 'build_depend', 'build_export_depend', 'exec_depend', 'run_depend',
            'test_depend')      # package.xml's tags naming a package it needs
 SIMULATOR = 'turtlesim'  # a package of this name is the grader's to run, not the submission's
+LOOSE = 'handed_in'      # the package the grader wraps scripts handed in without a package.xml in
 
 
 class Package(NamedTuple):
@@ -29,6 +31,7 @@ class Package(NamedTuple):
     problem: str            # why it cannot be run, or ''
     others: List[str] = []  # the submission's other packages' folders, built beside it
     notes: List[str] = []   # what of the submission was left out, and why
+    loose: bool = False     # no package.xml: scripts the grader wraps in a package (wrap)
 
 
 def survey(top):
@@ -168,7 +171,12 @@ def find(top) -> Package:
              for path in special]
     named = [(f, package_name(f)) for f in package_folders(top)]
     if not named:
-        return Package('', '', None, f'no package.xml in {top}', notes=notes)
+        if not _runnable(top):
+            return Package('', '', None, f'no package.xml in {top}', notes=notes)
+        # a TA runs the scripts of a folder handed in without its package.xml
+        # (`bash turtleletterstwo.sh`, as a real class's instructions said)
+        launch = lab_launch(top, {LOOSE: top})[1]
+        return Package(LOOSE, top, launch, '', notes=notes, loose=True)
     ours = [(f, n) for f, n in named if n != SIMULATOR]
     if not ours:
         return Package('', named[0][0], None, f'its only package is named {SIMULATOR}, as the '
@@ -272,6 +280,29 @@ def made_executable(folder, depth=3):
             os.chmod(entry.path, entry.stat(follow_symlinks=False).st_mode | 0o111)
             made.append(os.path.relpath(entry.path, folder))
     return sorted(made)
+
+
+def _runnable(folder, depth=3):
+    """Whether `folder` holds a script a TA could run: a plain file that
+    starts with #! or ends in .sh."""
+    return any(_starts_with_shebang(entry.path) or entry.name.endswith('.sh')
+               for entry in _plain_files(folder, depth, lambda found: False))
+
+
+def wrap(copied):
+    """The copy of a submission handed in without a package.xml made a
+    catkin package named LOOSE (its own package.xml and CMakeLists.txt
+    written over any left there), so that its scripts run as rosrun runs
+    a package's: the grader's copy only, never the student's folder."""
+    with open(os.path.join(copied, 'package.xml'), 'w') as f:
+        f.write(f'<?xml version="1.0"?>\n<package format="2">\n  <name>{LOOSE}</name>\n'
+                '  <version>0.0.0</version>\n  <description>Scripts handed in without a '
+                'package.xml, wrapped by the grader</description>\n  <maintainer email='
+                '"grader@example.org">grader</maintainer>\n  <license>none</license>\n'
+                '  <buildtool_depend>catkin</buildtool_depend>\n</package>\n')
+    with open(os.path.join(copied, 'CMakeLists.txt'), 'w') as f:
+        f.write(f'cmake_minimum_required(VERSION 3.0.2)\nproject({LOOSE})\n'
+                'find_package(catkin REQUIRED)\ncatkin_package()\n')
 
 
 def bare_shell(folder, depth=3):

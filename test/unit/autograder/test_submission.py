@@ -87,6 +87,28 @@ def test_no_package_no_name_no_launch_file(tmp_path):
     assert (package.problem, package.launch) == ('', None)
 
 
+def test_scripts_handed_in_without_a_package_xml_are_wrapped_in_a_package_of_the_graders(
+        tmp_path):
+    """A real class's folder of a shell script, its launch file and no
+    package.xml or CMakeLists.txt: a TA runs the script. The grader wraps
+    its copy in a package of its own (named LOOSE) that catkin builds;
+    the folder handed in is left as it was. Notes and no script: nothing
+    to run, and the row says there is no package.xml."""
+    make(tmp_path, {'notes/README.md': 'my letters'})
+    assert find(str(tmp_path / 'notes')).problem == f'no package.xml in {tmp_path / "notes"}'
+    make(tmp_path, {'hw/scripts/letters.sh': 'rosservice call /clear\n',
+                    'hw/launch/turtle.launch':
+                        '<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/></launch>'})
+    package = find(str(tmp_path / 'hw'))
+    assert (package.name, package.problem, package.loose) == (submission.LOOSE, '', True)
+    assert package.launch == 'launch/turtle.launch'
+    copied = copy(package, str(tmp_path / 'ws'))
+    submission.wrap(copied)
+    assert submission.package_name(copied) == submission.LOOSE
+    assert 'project(handed_in)' in open(os.path.join(copied, 'CMakeLists.txt')).read()
+    assert sorted(os.listdir(tmp_path / 'hw')) == ['launch', 'scripts']
+
+
 def test_the_copy_keeps_links_as_links_and_leaves_builds_behind(tmp_path):
     make(tmp_path, {'sub/p/package.xml': PACKAGE.format('p'), 'sub/p/launch/x.launch': LAB,
                     'sub/p/build/junk': 'x', 'secret': 'the instructor\'s'})
