@@ -3,7 +3,8 @@
     find     submission.find      the lab's package in the folder
     run      session.run          built, launched on the grader's world, P typed, watched
     observe  observations.of_run  the drawing in what the grader's simulator recorded
-    read     reading              the letters in its ink: the strokes, then OCR
+    read     reading              the letters in its ink (a pen colour each, where as
+                                  many): the strokes, then OCR
     alone    session.alone        executables started together that drew nothing of
                                   the letters, each run alone in a fresh world (a TA's try)
     score    rubric.grade         the points
@@ -20,7 +21,7 @@ import traceback
 
 from ..isolation.files import shown
 from ..reading.ocr import read_text, told_apart
-from ..reading.rows import read_row
+from ..reading.rows import in_colours, read_row
 from . import observations as seen
 from . import reports, rubric as rubrics, session, submission
 from .roster import Student
@@ -102,12 +103,17 @@ def observed(expected, run, rubric):
 
 
 def read(drawing, expected):
-    """(the strokes' readings, OCR's or None): OCR, the slower reader, is
-    asked only where the strokes do not read what was expected, or see
-    another letter as plainly (told_apart)."""
+    """(the strokes' readings, OCR's or None): a letter in each pen colour
+    read alone where the ink comes in as many colours as letters expected
+    (rows.in_colours), else the row; OCR, the slower reader, is asked only
+    where the strokes do not read what was expected, or see another letter
+    as plainly (told_apart)."""
     if drawing is None or not drawing.strokes:
         return [], None
-    readings = told_apart(drawing.strokes, read_row(drawing.strokes, expected))
+    letters = in_colours(drawing.strokes, drawing.looks, len(expected))
+    readings = [read_row(ink, letter)[0] for ink, letter in zip(letters, expected)] \
+        if letters else read_row(drawing.strokes, expected)
+    readings = told_apart(drawing.strokes, readings)
     if rubrics.drawn(readings) == expected:
         return readings, None
     return readings, read_text(drawing.strokes, expected)

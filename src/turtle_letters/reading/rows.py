@@ -339,6 +339,30 @@ def _blind(row, count):
     return [row.reading(part) for part in parts]
 
 
+def in_colours(ink, looks, count):
+    """The ink's letters where each is drawn in a pen colour of its own, as
+    a class drew its initials, a turtle and a colour each (`looks`: each
+    line's (r, g, b, ...)): its lines by colour, left to right by the
+    middle of their span across, where they come in `count` colours, 2 or
+    more; else None. Specks and dots are none of it, as in a row
+    (without_specks: an i's dot is a dot beside its R, not beside its
+    stem alone). (A real class's M and a, green and lavender, the a
+    drawn over the M's last leg: cut as one row, it read NB.)"""
+    if count < 2 or len(looks) != len(ink) or any(len(look) < 3 for look in looks):
+        return None
+    kept, colours = {id(line) for line in without_specks(ink)}, {}
+    for line, look in zip(ink, looks):
+        if id(line) in kept:
+            colours.setdefault(tuple(look[:3]), []).append(line)
+    if len(colours) != count:
+        return None
+
+    def middle(lines):
+        x, _, w, _ = box([p for line in lines for p in line])
+        return x + w / 2
+    return sorted(colours.values(), key=middle)
+
+
 def read_row(ink, expected='') -> List[Reading]:
     """The letters `ink` draws, left to right: the whole read as one when
     one letter is expected, else each letter set apart by GAP read alone;

@@ -108,3 +108,21 @@ def test_a_package_that_cannot_be_found_is_a_row_that_says_why_and_runs_nothing(
                               str(tmp_path / 'out'), Place())
     assert facts.problem == 'no package.xml in the folder'
     assert row.grade.score == 0 and 'no package.xml in the folder' in row.grade.reason
+
+
+def test_read_takes_each_pen_colour_for_a_letter_where_there_are_as_many_as_expected():
+    """The read stage: an M in one turtle's green pen, an o in another's
+    driven round over the M's last leg, as the simulator recorded their
+    looks. Each colour is read alone: MO, the M first; in one pen, the
+    same ink is a row, and the cut through the overlap does not read MO."""
+    import math
+    from support.cadet_paths import arc, driven
+    from support.glyph_rows import row
+    m = row('M')
+    right, bottom = max(p[0] for s in m for p in s), min(p[1] for s in m for p in s)
+    ink = m + [driven([arc(0.6, 0.97 * math.tau)], right, bottom + 0.5)]
+    green, lavender = (0, 255, 0, 2), (180, 184, 255, 2)
+    apart = Drawing(ink, 1.0, 5.0, 90, [], looks=[green] * len(m) + [lavender])
+    together = apart._replace(looks=[green] * len(ink))
+    assert [r.letter for r in driver.read(apart, 'MO')[0]] == ['M', 'O']
+    assert [r.letter for r in driver.read(together, 'MO')[0]] != ['M', 'O']

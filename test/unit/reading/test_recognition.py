@@ -10,7 +10,7 @@ import pytest
 from turtle_letters.reading.ink import MAX_POINTS, outline, thinned, turned
 from turtle_letters.reading.recognition import read
 from turtle_letters.reading.forms import READABLE, VARIANTS
-from turtle_letters.reading.rows import apart, read_row
+from turtle_letters.reading.rows import apart, in_colours, read_row
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import arc, driven, forward, placed, retraced, rounded, turn
@@ -493,6 +493,50 @@ def test_a_small_a_and_n_are_forms_of_their_capitals_and_of_no_other(first, smal
     ink += _lowercase(small, max(x for stroke in ink for x, _ in stroke) + 0.5, 2.0 * share)
     assert [r.letter for r in read_row(ink, first + small)] == [first, small]
     assert read_row(ink, first + other)[1].letter == small
+
+
+GREEN, LAVENDER, BLUE = (0, 255, 0, 2), (180, 184, 255, 2), (0, 0, 255, 5)   # turtles' pens
+
+
+def test_letters_in_pens_of_their_own_are_read_each_alone_though_they_overlap():
+    """An M in a green pen and an o in another turtle's, driven round over
+    the M's last leg (a real class's Ma): cut as one row the two read as
+    no MO; each colour a letter, left to right, as a TA reads them, they
+    do."""
+    m = row('M')
+    xs, ys = [p[0] for s in m for p in s], [p[1] for s in m for p in s]
+    right, bottom, h = max(xs), min(ys), max(ys) - min(ys)
+    o = driven([arc(0.3 * h, 0.97 * math.tau)], right, bottom + 0.25 * h)
+    ink = m + [o]
+    assert [r.letter for r in read_row(ink, 'MO')] != ['M', 'O']
+    letters = in_colours(ink, [GREEN] * len(m) + [LAVENDER], 2)
+    assert letters == [m, [o]]
+    assert [read_row(letter, e)[0].letter for letter, e in zip(letters, 'MO')] == ['M', 'O']
+
+
+def test_a_dot_in_a_pen_of_its_own_letter_is_a_dot_of_the_row():
+    """An R in blue, then a small i in green, its dot a short level dash
+    above its stem (a real class's Ri): the dot is a dot beside the row,
+    as it is read in a row, and the i is an I. (Read with its stem alone,
+    the dash is a T's bar: no letter reads; a real one read as a Z.)"""
+    r = row('R')
+    left, height = max(p[0] for s in r for p in s) + 0.6, 0.9
+    stem = [(left, 3.0), (left, 3.0 + height)]
+    dot = [(left - 0.07, 3.2 + height), (left + 0.07, 3.2 + height)]
+    assert read_row([stem, dot], 'I')[0].letter is None
+    letters = in_colours(r + [stem, dot], [BLUE] * len(r) + [GREEN, GREEN], 2)
+    assert letters == [r, [stem]]
+    assert [read_row(letter, e)[0].letter for letter, e in zip(letters, 'RI')] == ['R', 'I']
+
+
+def test_pens_are_letters_only_where_there_are_as_many_as_letters_expected():
+    """One colour, a third colour, or a line whose pen the record did not
+    give: the ink is read as a row."""
+    m, o = row('M'), [driven([arc(0.6, 0.97 * math.tau)], 3.0, 3.0)]
+    assert in_colours(m + o, [GREEN] * (len(m) + 1), 2) is None
+    assert in_colours(m + o, [GREEN] * len(m) + [LAVENDER], 3) is None
+    assert in_colours(m + o, [GREEN] * len(m) + [LAVENDER], 1) is None
+    assert in_colours(m + o, [GREEN] * len(m) + [()], 2) is None
 
 
 def test_a_loop_whose_middle_line_is_one_point_reads_as_no_letter():
