@@ -10,7 +10,7 @@ import stat
 import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
 
-from ..isolation.files import read_plain
+from ..isolation.files import read_plain, remove_tree
 
 SKIPPED = {'.git', 'build', 'devel', 'install', 'logs', '__pycache__'}
 MAX_BYTES = 1 << 20      # a package.xml or launch file larger than this is not read
@@ -291,18 +291,30 @@ def _runnable(folder, depth=3):
 
 def wrap(copied):
     """The copy of a submission handed in without a package.xml made a
-    catkin package named LOOSE (its own package.xml and CMakeLists.txt
-    written over any left there), so that its scripts run as rosrun runs
-    a package's: the grader's copy only, never the student's folder."""
-    with open(os.path.join(copied, 'package.xml'), 'w') as f:
-        f.write(f'<?xml version="1.0"?>\n<package format="2">\n  <name>{LOOSE}</name>\n'
-                '  <version>0.0.0</version>\n  <description>Scripts handed in without a '
-                'package.xml, wrapped by the grader</description>\n  <maintainer email='
-                '"grader@example.org">grader</maintainer>\n  <license>none</license>\n'
-                '  <buildtool_depend>catkin</buildtool_depend>\n</package>\n')
-    with open(os.path.join(copied, 'CMakeLists.txt'), 'w') as f:
-        f.write(f'cmake_minimum_required(VERSION 3.0.2)\nproject({LOOSE})\n'
-                'find_package(catkin REQUIRED)\ncatkin_package()\n')
+    catkin package named LOOSE, so that its scripts run as rosrun runs a
+    package's: its own package.xml and CMakeLists.txt written in the
+    grader's copy, in place of whatever stood there (a link is removed,
+    never followed: the grader writes before the sandbox starts)."""
+    _written(os.path.join(copied, 'package.xml'),
+             f'<?xml version="1.0"?>\n<package format="2">\n  <name>{LOOSE}</name>\n'
+             '  <version>0.0.0</version>\n  <description>Scripts handed in without a '
+             'package.xml, wrapped by the grader</description>\n  <maintainer email='
+             '"grader@example.org">grader</maintainer>\n  <license>none</license>\n'
+             '  <buildtool_depend>catkin</buildtool_depend>\n</package>\n')
+    _written(os.path.join(copied, 'CMakeLists.txt'),
+             f'cmake_minimum_required(VERSION 3.0.2)\nproject({LOOSE})\n'
+             'find_package(catkin REQUIRED)\ncatkin_package()\n')
+
+
+def _written(path, text):
+    """`text` in a new plain file at `path`, whatever stood there removed first."""
+    if os.path.isdir(path) and not os.path.islink(path):
+        remove_tree(path)
+    elif os.path.lexists(path):
+        os.unlink(path)
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o644)
+    with os.fdopen(fd, 'w') as f:
+        f.write(text)
 
 
 def bare_shell(folder, depth=3):

@@ -109,6 +109,22 @@ def test_scripts_handed_in_without_a_package_xml_are_wrapped_in_a_package_of_the
     assert sorted(os.listdir(tmp_path / 'hw')) == ['launch', 'scripts']
 
 
+def test_wrapping_loose_scripts_follows_no_link_they_hold(tmp_path):
+    """A hostile folder of loose scripts whose CMakeLists.txt is a link to
+    a file of the instructor's, and whose package.xml is a folder: the
+    grader writes its own in the copy, before the sandbox starts, and the
+    file linked to is left as it was."""
+    make(tmp_path, {'secret': 'the instructor\'s', 'hw/draw.sh': 'rostopic list\n',
+                    'hw/package.xml/inside': 'x'})
+    os.symlink(str(tmp_path / 'secret'), str(tmp_path / 'hw' / 'CMakeLists.txt'))
+    copied = copy(find(str(tmp_path / 'hw')), str(tmp_path / 'ws'))
+    submission.wrap(copied)
+    assert open(tmp_path / 'secret').read() == 'the instructor\'s'
+    written = os.path.join(copied, 'CMakeLists.txt')
+    assert not os.path.islink(written) and 'project(handed_in)' in open(written).read()
+    assert submission.package_name(copied) == submission.LOOSE
+
+
 def test_the_copy_keeps_links_as_links_and_leaves_builds_behind(tmp_path):
     make(tmp_path, {'sub/p/package.xml': PACKAGE.format('p'), 'sub/p/launch/x.launch': LAB,
                     'sub/p/build/junk': 'x', 'secret': 'the instructor\'s'})
