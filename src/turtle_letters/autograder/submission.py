@@ -275,18 +275,20 @@ def made_executable(folder, depth=3):
     in the package."""
     made = []
     for entry in _plain_files(folder, depth, lambda found: False):
-        runnable = _starts_with_shebang(entry.path) or entry.name.endswith('.sh')
-        if not os.access(entry.path, os.X_OK) and runnable and len(made) < MAX_NODES:
+        if not os.access(entry.path, os.X_OK) and _script(entry) and len(made) < MAX_NODES:
             os.chmod(entry.path, entry.stat(follow_symlinks=False).st_mode | 0o111)
             made.append(os.path.relpath(entry.path, folder))
     return sorted(made)
 
 
 def _runnable(folder, depth=3):
-    """Whether `folder` holds a script a TA could run: a plain file that
-    starts with #! or ends in .sh."""
-    return any(_starts_with_shebang(entry.path) or entry.name.endswith('.sh')
-               for entry in _plain_files(folder, depth, lambda found: False))
+    """Whether `folder` holds a script a TA could run (_script)."""
+    return any(_script(entry) for entry in _plain_files(folder, depth, lambda found: False))
+
+
+def _script(entry):
+    """Whether a plain file is a script a TA runs: it starts with #! or ends in .sh."""
+    return _starts_with_shebang(entry.path) or entry.name.endswith('.sh')
 
 
 def wrap(copied):
