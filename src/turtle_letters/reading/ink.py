@@ -20,20 +20,28 @@ def box(points):
 
 
 def sampled(lines, step):
-    """samples() as an array of (x, y): the same points, made by numpy."""
-    parts = []
-    for line in lines:
-        line = numpy.asarray(line, dtype=float).reshape(-1, 2)
-        if len(line) < 2:
-            parts.append(line)
-            continue
-        a, b = line[:-1], line[1:]
-        counts = numpy.maximum(1, numpy.ceil(numpy.hypot(*(b - a).T) / step)).astype(int)
-        where = numpy.repeat(numpy.arange(len(a)), counts)
-        fraction = (numpy.arange(counts.sum()) - numpy.repeat(numpy.cumsum(counts) - counts,
-                                                              counts) + 1) / counts[where]
-        parts += [line[:1], a[where] + (b[where] - a[where]) * fraction[:, None]]
-    return numpy.concatenate(parts) if parts else numpy.zeros((0, 2))
+    """samples() as an array of (x, y): the same points, made by numpy for
+    all the lines at once (a gothic row cut in two is a hundred short runs)."""
+    arrays = [numpy.asarray(line, dtype=float).reshape(-1, 2) for line in lines if len(line)]
+    if not arrays:
+        return numpy.zeros((0, 2))
+    points = numpy.concatenate(arrays)
+    sizes = numpy.array([len(a) for a in arrays])
+    firsts = numpy.cumsum(sizes) - sizes
+    first = numpy.zeros(len(points), dtype=int)
+    first[firsts] = 1
+    onward = numpy.ones(len(points), dtype=bool)    # the segment to the next point is a line's
+    onward[firsts + sizes - 1] = False
+    step_to = points[numpy.minimum(numpy.arange(len(points)) + 1, len(points) - 1)] - points
+    counts = numpy.where(onward, numpy.maximum(1, numpy.ceil(numpy.hypot(*step_to.T) / step)),
+                         0).astype(int)
+    # each point gives itself where it starts its line, then its segment's samples
+    given = first + counts
+    where = numpy.repeat(numpy.arange(len(points)), given)
+    along = numpy.arange(given.sum()) - numpy.repeat(numpy.cumsum(given) - given, given) + 1 \
+        - first[where]      # 0: the line's first point itself
+    fraction = along / numpy.maximum(counts[where], 1)
+    return points[where] + step_to[where] * fraction[:, None]
 
 
 def samples(lines, step):
