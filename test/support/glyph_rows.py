@@ -18,9 +18,22 @@ def touching(family, text, aspect=1.0, gap=0.0):
     where the last one's ends, all `aspect` times as wide (as the
     recognition benchmark draws its rows)."""
     from turtle_letters.letters.hershey import load_font
-    font, ink, x = load_font(family), [], 0.0
-    for letter in text:
-        strokes = font.glyph(letter).strokes
+    font = load_font(family)
+    return side_by_side([font.glyph(letter).strokes for letter in text], aspect, gap)
+
+
+def cadets(text, aspect=1.0, gap=0.0):
+    """touching(), in the forms cadets draw with rotate and move (each
+    letter's last in forms.VARIANTS, as the benchmark draws them)."""
+    from turtle_letters.reading.forms import VARIANTS
+    glyphs = dict(VARIANTS)
+    return side_by_side([glyphs[letter] for letter in text], aspect, gap)
+
+
+def side_by_side(glyphs, aspect, gap):
+    """Each glyph's strokes starting `gap` after the last one's end, all `aspect` times as wide."""
+    ink, x = [], 0.0
+    for strokes in glyphs:
         left = min(px for s in strokes for px, _ in s)
         ink += [[((px - left + x) * aspect, py) for px, py in s] for s in strokes]
         x += max(px for s in strokes for px, _ in s) - left + gap

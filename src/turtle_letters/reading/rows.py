@@ -24,7 +24,7 @@ from scipy.spatial import cKDTree
 
 from .ink import box, closed, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
-from .recognition import MOST_TILT, SAMPLE, Reading, read
+from .recognition import MOST_TILT, SAMPLE, TILTS, Reading, read
 
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
@@ -40,15 +40,21 @@ AS_LOW = 1.3        # a turn leaving a row this share as high as the lowest does
 FAR_OFF = 30        # degrees off level past which, on a tie, neither way up of a row is taken
 CLEAR_LINES = 40    # lines of a row past which its letters are not sought clear of each other
 CLEAR_POINTS = 400  # ... and the points of a line compared, at most
+# Degrees off its row's level (levels) a letter of a row is tried at, at most, before
+# the finer steps: a row's letters lean alike, and a part of a row fit a letter of
+# its own at 35 or 45 degrees that none of the row's was (the recognition benchmark's
+# rows, each to ±25: 3 more read right, 3 fewer wrong letters, in 12% less time).
+ROW_TILTS = tuple(t for t in TILTS if abs(t) <= 25)
 
 
 class Row:
     """A row's ink, finely sampled, and what was worked out about its
     parts: how well the part between two x fits a letter (near level),
-    and the reading of a part, each once."""
+    and the reading of a part, tried at `tilts` (a letter alone, at all
+    of read()'s), each once."""
 
-    def __init__(self, ink):
-        self.ink = ink
+    def __init__(self, ink, tilts=TILTS):
+        self.ink, self.tilts = ink, tilts
         self.x0, _, self.width, self.height = box([p for line in ink for p in line])
         self._fits, self._readings = {}, {}
 
@@ -110,7 +116,7 @@ class Row:
         whole letter is no I.)"""
         key = (tuple(tuple(tuple(p) for p in line) for line in part), letters, exact)
         if key not in self._readings:
-            reading = read(part, letters)
+            reading = read(part, letters, self.tilts)
             fits = reading.fits
             alone = self.reading(part, exact).best if exact and reading.letter != exact else None
             if alone:
@@ -273,7 +279,7 @@ def row_of(ink):
 
 @functools.lru_cache(maxsize=8)
 def _row(lines):
-    return Row([list(line) for line in lines])
+    return Row([list(line) for line in lines], ROW_TILTS)
 
 
 def levels(ink, count=2):
