@@ -23,15 +23,22 @@ _ARCH = [(0.3 - 0.3 * math.cos(math.radians(a)), 0.7 + 0.3 * math.sin(math.radia
          for a in range(0, 181, 15)]      # an A's round top
 _CURL = [(0.27 + 0.23 * math.cos(math.radians(a)), 0.27 + 0.23 * math.sin(math.radians(a)))
          for a in range(0, -226, -15)]    # a J's hook, on past its half circle
+_BOWL = [(0.45 + 0.45 * math.cos(math.radians(a)), 0.55 + 0.45 * math.sin(math.radians(a)))
+         for a in range(0, 361, 15)]       # a small a's round bowl, from its right, once round
 # How cadets draw letters with rotate and move, beside the font's glyphs:
 # square corners, a K's arms meeting at the stem's middle (or stopping short
 # of its corners, a real class's Ko), an A's bar from a quarter to half its
 # height (or its top an arch, a real class's Al), an N with level feet, M
 # and N as zigzags (a real class's MF), an I of one stroke, a J barred
-# across its top (two other classes' Jo, one with its hook curled on up). A
-# square-cornered O is an O: no D is drawn with four right angles. (The
-# recognition benchmark draws each letter's last form here as a cadet's.)
+# across its top (two other classes' Jo, one with its hook curled on up), a
+# small a as a turtle draws it, a round bowl and a stem down its right side
+# from the bowl's middle (a real class's Ma and Ca; futural's a has its stem
+# from the top). A square-cornered O is an O: no D is drawn with four right
+# angles. (The recognition benchmark draws each letter's last form here as a
+# cadet's.)
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
+    ('A', [_BOWL + [(0.9, 0)]]),                    # a small a: its bowl, then down
+    ('A', [[(0.9, 0)] + _BOWL[:19]]),               # ... up, then round three quarters
     ('A', [[(0, 0)] + _ARCH + [(0.6, 0)], [(0, 0.45), (0.6, 0.45)]]),   # arched
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),

@@ -495,6 +495,44 @@ def test_a_small_a_and_n_are_forms_of_their_capitals_and_of_no_other(first, smal
     assert read_row(ink, first + other)[1].letter == small
 
 
+def _turtles_a(way, left, height, tail):
+    """A small a as a turtle drives it, `height` high: round its bowl from
+    its right, then down its stem ('bowl first'); or up its stem, then
+    three quarters round (its bowl open below on the right). The stem runs
+    `tail` of the bowl's radius past the bowl's foot."""
+    r = height / (2 + tail)
+    right, middle = left + 2 * r, 3.0 + height - r
+    if way == 'bowl first':
+        return driven([arc(r, math.tau), turn(math.pi), forward(r * (1 + tail))],
+                      right, middle, math.pi / 2)
+    return driven([forward(r * (1 + tail)), arc(r, 1.5 * math.pi)],
+                  right, middle - r * (1 + tail), math.pi / 2)
+
+
+@pytest.mark.parametrize('way', ['bowl first', 'stem first'])
+@pytest.mark.parametrize('tail', [0.0, 0.2])
+@pytest.mark.parametrize('tilt', [0, -20, 20])
+def test_a_turtles_small_a_with_its_stem_from_the_bowls_middle_is_an_a(way, tail, tilt):
+    """'Ma', 'Ca': a real class's small a's, a stem down the right side of
+    a round bowl from its middle, one bowl closed and one open below, read
+    as O and Q: alone (as a pen of its own is read) and in a row, against
+    another text too, they are A's."""
+    alone = read(turned([_turtles_a(way, 0.0, 1.5, tail)], tilt, (0.0, 0.0)))
+    assert alone.letter == 'A', alone.best
+    ink = row('C')
+    ink += [_turtles_a(way, max(x for stroke in ink for x, _ in stroke) + 0.5, 1.4, tail)]
+    assert [r.letter for r in read_row(ink, 'CA')] == ['C', 'A']
+    assert [read_row(ink, other)[1].letter for other in ('CO', 'CQ')] == ['A', 'A']
+
+
+@pytest.mark.parametrize('tilt', [0, -30, 30])
+def test_a_turtles_q_its_tail_across_its_foot_is_no_a(tilt):
+    """A circle and a tail across its foot, the right, lies near a small a
+    whose stem runs past its bowl; it is no A."""
+    q = [driven([arc(1.0, math.tau)], 2.0, 4.0, math.pi / 2), [(1.3, 3.7), (2.2, 2.8)]]
+    assert read(turned(q, tilt, (0.0, 0.0))).letter != 'A'
+
+
 GREEN, LAVENDER, BLUE = (0, 255, 0, 2), (180, 184, 255, 2), (0, 0, 255, 5)   # turtles' pens
 
 
