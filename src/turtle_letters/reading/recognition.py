@@ -82,10 +82,6 @@ class Distances:
         self.grid[self.rows(ys), self.cols(xs)] = False
         self.grid = distance_transform_edt(self.grid) * CELL
 
-    def cells(self, xs, ys):
-        """The grid's cells that points lie in, as (row, column), in floats."""
-        return numpy.column_stack((self.rows(ys), self.cols(xs))).astype(float)
-
     def rows(self, ys):
         return _within(grid_rows(ys), self.grid.shape[0])
 
@@ -118,6 +114,7 @@ class Fitting:
         self.hi = max(aspect, (aspect + width.max()) / 2)
         self.ink = Distances(drawn[:, 0], drawn[:, 1], self.lo, self.hi)
         self.witnesses = []     # indices of inked, fit()'s
+        self._placed = (None, None)     # (i, _cells(i)): a bound is followed by its fit
 
     @functools.cached_property
     def inked(self):
@@ -146,10 +143,18 @@ class Fitting:
         return numpy.maximum.reduceat(self._on_ink(sparse, self.choice.slot[sparse]),
                                       self.choice.sparse_starts[:-1])
 
+    def _cells(self, i):
+        """Candidate i's points placed, as the grid's (rows, columns), as _on_ink places them."""
+        if self._placed[0] != i:
+            part = slice(self.choice.starts[i], self.choice.starts[i + 1])
+            xs = self.left[i] + self.choice.xs[part] * self.across[i]
+            self._placed = i, (self.choice.rows[part],
+                               numpy.rint((xs - self.lo) / CELL).astype(int) + 1)
+        return self._placed[1]
+
     def bound(self, i):
         """Candidate i's farthest point from the ink, of all its points: its fit is no less."""
-        return float(self._on_ink(slice(self.choice.starts[i], self.choice.starts[i + 1]),
-                                  i).max())
+        return float(self.ink.grid[self._cells(i)].max())
 
     def fit(self, i, bound, below=math.inf):
         """(candidate i's fit, True): the worse of its bound and how far the ink strays
@@ -159,13 +164,11 @@ class Fitting:
         from earlier candidates (WITNESSES of it) strays `below` or more from this one:
         its fit is no less (three in four exact fits of a row were no better than
         the fits they had to beat)."""
-        part = slice(self.choice.starts[i], self.choice.starts[i + 1])
-        xs = self.left[i] + self.choice.xs[part] * self.across[i]
-        shape = self.ink.cells(xs, self.choice.ys[part])
+        shape = numpy.column_stack(self._cells(i)).astype(float)
         if self.witnesses:
             far = self.inked[self.witnesses]
-            near = numpy.sqrt(((far[:, None, :] - shape[None, :, :]) ** 2).sum(axis=2))
-            strays = max(bound, float(near.min(axis=1).max()) * CELL)
+            near = ((far[:, None, :] - shape[None, :, :]) ** 2).sum(axis=2)   # squared
+            strays = max(bound, math.sqrt(float(near.min(axis=1).max())) * CELL)
             if strays >= below:
                 return strays, False
         distance, worst, _ = directed_hausdorff(self.inked, shape)
