@@ -133,9 +133,12 @@ class Fitting:
         slice) lies, placed: each of candidate `slot` (its index, or one a point).
         The grid holds every candidate placed (from 0 to 1 high, from lo to hi
         across, a cell to spare each side): no index is put within it."""
+        return self.ink.grid[self.choice.rows[points], self._columns(points, slot)]
+
+    def _columns(self, points, slot):
+        """The grid's columns the choice's `points`, of candidate `slot`, lie in, placed."""
         xs = self.left[slot] + self.choice.xs[points] * self.across[slot]
-        cols = numpy.rint((xs - self.lo) / CELL).astype(int) + 1
-        return self.ink.grid[self.choice.rows[points], cols]
+        return numpy.rint((xs - self.lo) / CELL).astype(int) + 1
 
     def bounds(self):
         """Each candidate's farthest point from the ink, of its sparse ones: below its bound."""
@@ -147,9 +150,7 @@ class Fitting:
         """Candidate i's points placed, as the grid's (rows, columns), as _on_ink places them."""
         if self._placed[0] != i:
             part = slice(self.choice.starts[i], self.choice.starts[i + 1])
-            xs = self.left[i] + self.choice.xs[part] * self.across[i]
-            self._placed = i, (self.choice.rows[part],
-                               numpy.rint((xs - self.lo) / CELL).astype(int) + 1)
+            self._placed = i, (self.choice.rows[part], self._columns(part, i))
         return self._placed[1]
 
     def bound(self, i):
