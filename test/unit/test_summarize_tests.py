@@ -1,5 +1,6 @@
 """`make test` ends with one count over every JUnit file, and names each
-failed case just before it (CI shows only the end of the output)."""
+failed case just before it, with the end of what it said (CI shows only
+the end of the output)."""
 import os
 import subprocess
 import sys
@@ -15,6 +16,13 @@ PYTEST_XML = '''<?xml version="1.0" encoding="utf-8"?><testsuites><testsuite nam
 ROSTEST_XML = '''<?xml version="1.0" encoding="utf-8"?><testsuite name="rostest">
 <testcase classname="turtle_letters.faults" name="test_3c" time="40.0">
 <error type="" message="timed out"/></testcase>
+<testcase classname="turtle_letters.rosunit-viewer" name="test_6" time="9.0">
+<failure type="AssertionError"><![CDATA[Traceback (most recent call last):
+  File "test_viewer.py", line 305, in test_6
+    wait_until(lambda: ok(), 20, 'the page backing off')
+AssertionError: waited 20 s for the page backing off, in vain
+['live', 'live']
+]]></failure></testcase>
 <testcase classname="turtle_letters.faults" name="test_3d" time="4.0"/>
 </testsuite>'''
 
@@ -29,13 +37,19 @@ def summarize(tmp_path, files):
     return done.returncode, done.stdout.splitlines()
 
 
-def test_each_failure_and_error_is_named_before_the_count(tmp_path):
+def test_each_failure_and_error_is_named_with_its_last_words_before_the_count(tmp_path):
     code, lines = summarize(tmp_path, {'class/pytest.xml': PYTEST_XML,
                                        'turtle_letters/rostest-test_faults.xml': ROSTEST_XML})
     assert lines == [
         'FAILED class/pytest.xml: test.class.test_grading.test_broken',
+        '    assert 1 == 2',
         'FAILED turtle_letters/rostest-test_faults.xml: turtle_letters.faults.test_3c',
-        '2 passed, 2 failed, 1 skipped']
+        '    timed out',
+        'FAILED turtle_letters/rostest-test_faults.xml: turtle_letters.rosunit-viewer.test_6',
+        "    wait_until(lambda: ok(), 20, 'the page backing off')",
+        '    AssertionError: waited 20 s for the page backing off, in vain',
+        "    ['live', 'live']",
+        '2 passed, 3 failed, 1 skipped']
     assert code == 1
 
 
