@@ -17,14 +17,25 @@ READABLE = 0.15     # worst deviation, share of the height, of a path still read
 CLEAN = READABLE / 2    # a fit this close reads its letter beyond doubt
 SPARSE = 3          # a candidate's bound is taken on every SPARSE-th of its points
 
+
+def _round(centre, radius, start, end):
+    """Points on a circle about `centre` from `start` to `end`, degrees, 15 apart."""
+    steps = int(abs(end - start) / 15)
+    return [(centre[0] + radius * math.cos(math.radians(start + (end - start) * k / steps)),
+             centre[1] + radius * math.sin(math.radians(start + (end - start) * k / steps)))
+            for k in range(steps + 1)]
+
+
 _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
 _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
 _ARCH = [(0.3 - 0.3 * math.cos(math.radians(a)), 0.7 + 0.3 * math.sin(math.radians(a)))
          for a in range(0, 181, 15)]      # an A's round top
 _CURL = [(0.27 + 0.23 * math.cos(math.radians(a)), 0.27 + 0.23 * math.sin(math.radians(a)))
          for a in range(0, -226, -15)]    # a J's hook, on past its half circle
-_BOWL = [(0.45 + 0.45 * math.cos(math.radians(a)), 0.55 + 0.45 * math.sin(math.radians(a)))
-         for a in range(0, 361, 15)]       # a small a's round bowl, from its right, once round
+_BOWL = _round((0.45, 0.55), 0.45, 0, 360)     # a small a's round bowl, from its right, once round
+# a B of one loop: up its straight back, round its top bowl to a point inside, round the bottom
+_LOOP_B = [(0, 0.27)] + _round((0.27, 0.73), 0.27, 180, -75) + \
+    _round((0.27, 0.27), 0.27, 75, -180)
 # How cadets draw letters with rotate and move, beside the font's glyphs:
 # square corners, a K's arms meeting at the stem's middle (or stopping short
 # of its corners, a real class's Ko), an A's bar from a quarter to half its
@@ -66,6 +77,10 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('U', [[(0, 1), (0, 0), (0.6, 0), (0.6, 1)]]),
     ('W', [[(0, 1), (0.175, 0), (0.35, 1), (0.525, 0), (0.7, 1)]]),
 ]
+# Forms read only within FLOURISHED_READABLE: their curves lie near many
+# letters' strokes. A B of one loop, its bowls meeting inside, off its back (a
+# real class's BK), read within READABLE took a tilted, touching GI for a B.
+CLOSE_VARIANTS: List[Tuple[str, List[List[Point]]]] = [('B', [_LOOP_B])]
 # Hershey families a cadet may draw in (the lab's `font` draws each of
 # them), read as their own glyphs: a script or gothic capital is far from
 # the builtin font's. Families absent (no hershey-fonts-data) are left out.
@@ -89,7 +104,8 @@ def _candidates():
     """(letter, strokes, the fit it reads within) of every form a letter is read in."""
     from ..letters.hershey import FontError, load_font
     found = [(c, FONT[c].strokes, READABLE) for c in string.ascii_uppercase] + \
-        [(c, strokes, READABLE) for c, strokes in VARIANTS]
+        [(c, strokes, READABLE) for c, strokes in VARIANTS] + \
+        [(c, strokes, FLOURISHED_READABLE) for c, strokes in CLOSE_VARIANTS]
     for family in FAMILIES + FLOURISHED:
         try:
             font = load_font(family)

@@ -495,6 +495,17 @@ def test_a_small_a_and_n_are_forms_of_their_capitals_and_of_no_other(first, smal
     assert read_row(ink, first + other)[1].letter == small
 
 
+@pytest.mark.parametrize('tilt', [0, -20, 20])
+def test_a_b_of_one_loop_its_bowls_meeting_inside_off_its_back(tilt):
+    """A real class's B: up its straight back, round its top bowl to a
+    point inside, round its bottom bowl back to its start, as a turtle
+    drives it (the real one read as no letter, an R nearest); mirrored, no B."""
+    b = driven([forward(1.4), arc(0.8, -4 * PI / 3), turn(2 * PI / 3), arc(0.8, -4 * PI / 3)],
+               0.0, 3.8, PI / 2)
+    assert read(turned([b], tilt, (0.0, 0.0))).letter == 'B'
+    assert read(turned([[(-x, y) for x, y in b]], tilt, (0.0, 0.0))).letter != 'B'
+
+
 def _turtles_a(way, left, height, tail):
     """A small a as a turtle drives it, `height` high: round its bowl from
     its right, then down its stem ('bowl first'); or up its stem, then
