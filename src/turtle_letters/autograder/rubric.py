@@ -274,10 +274,20 @@ def _letter_read(facts, _):
     right = len(_right(facts))
     if text == facts.expected:
         return 1.0, f'drew {text}, as expected'
-    wrong = f'drew {text}, expected {facts.expected}'
+    wrong, small_l = f'drew {text}, expected {facts.expected}', _small_l(text, facts.expected)
     if len(facts.expected) == 1:
-        return 0.0, wrong
-    return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place'
+        return 0.0, wrong + small_l
+    return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place{small_l}'
+
+
+def _small_l(text, expected):
+    """Why an L read as an I is not credited: a small l is one bare stroke,
+    an I's form as much as an l's (a real class's Al), and no stroke tells
+    which was meant."""
+    if any(t == 'I' and e == 'L' for t, e in zip(text, expected)):
+        return ('; the L reads as an I: a small l, one bare stroke, is as much an I, so it is '
+                'not credited (a capital L reads)')
+    return ''
 
 
 def _accuracy(facts, rubric):

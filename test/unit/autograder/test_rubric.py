@@ -210,6 +210,16 @@ def test_initials_earn_each_letter_in_its_place():
     assert 9 < half[accuracy][0] <= 10
 
 
+def test_a_small_l_a_bare_stroke_is_not_credited_and_the_row_says_why():
+    a = [(1.0, 1.0), (1.6, 3.0), (2.2, 1.0)], [(1.2, 1.7), (2.0, 1.7)]
+    small_l = [(3.0, 1.0), (3.0, 3.0)]
+    graded = scores_of(grade(facts(Drawing([*a, small_l], 1.0, 5.0, 90, []), expected='AL'),
+                             load(DEFAULT)))
+    assert graded['The letter drawn is the expected one'] == (
+        12.5, 'drew AI, expected AL: 1 in place; the L reads as an I: a small l, one bare '
+              'stroke, is as much an I, so it is not credited (a capital L reads)')
+
+
 def test_a_tilted_letter_is_read_and_its_tilt_said():
     from turtle_letters.reading.ink import turned
     tilted = turned([L_PATH], 10, (1.5, 2.0))
