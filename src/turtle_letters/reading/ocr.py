@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 from .ink import box, closed, squarest_turn, thinned, turned
 from .forms import CLEAN
-from .recognition import Reading
+from .recognition import TWINS, Reading
 from .rows import letters_of, levels, read_blind, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
@@ -237,11 +237,21 @@ def supports(reading: OcrReading, expected: str, strokes=()) -> bool:
     O with no tail is a Q to OCR 90% sure, the strokes read it an O within
     2% of its height. A serif J drawn round its edge, whose thin hook its
     middle line hardly keeps, is an I within 2.2% of its height and a J
-    within 6.1%: OCR, J 95% sure, tells the two apart.)"""
+    within 6.1%: OCR, J 95% sure, tells the two apart.) Nor is it where OCR
+    read the ink turned and the strokes' best fit is the expected letter's
+    twin (recognition.TWINS): turned, a Z is an N to OCR."""
     if not (expected and reading.text == expected and not reading.objection and
             reading.confidence >= _needed(reading.tilt, reading.width)):
         return False
-    return not any(plainly_other(r, e) for r, e in zip(strokes, expected))
+    return not any(plainly_other(r, e) or (reading.tilt and _twin_fits(r, e))
+                   for r, e in zip(strokes, expected))
+
+
+def _twin_fits(reading, expected):
+    """Whether the strokes' best fit (recognition.upright_twin's choice) is
+    `expected`'s twin, within the fit it reads at."""
+    best = reading.best
+    return best is not None and best.letter == TWINS.get(expected) and best.fit <= best.readable
 
 
 def plainly_other(reading, expected):

@@ -40,6 +40,11 @@ AMBIGUOUS = 0.005   # another letter fitting within this of the best: the two ca
 RIVAL = 1.4
 WITNESSES = 4       # the ink cells farthest from the last few candidates fitted, kept
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
+# N and Z are one shape a quarter-turn apart (a Z at 40 degrees is an N at -50): ink
+# that reads as both, their tilts about a quarter-turn apart (within TWIN_TURN of 90
+# degrees), is the one standing more upright, as a person reads it.
+TWINS = {'N': 'Z', 'Z': 'N'}
+TWIN_TURN = 15
 # A box this wide for its height is a block I's edge and a square O alike: no letter.
 # (A DejaVu Sans Bold I stretched to 0.48 was credited as the O it was graded against.)
 DOUBTFUL_BOX = (0.3, 0.5)
@@ -314,11 +319,23 @@ def _read(ink, letters, tilts, finer, refined) -> Reading:
             done |= set(more)
             _tried(ink, letters, fits, more, centre, refined)
     placed_fits = {letter: _placed(letter, f, centre) for letter, f in fits.items()}
-    best = min(placed_fits.values(), key=lambda f: f.fit, default=None)
+    best = upright_twin(min(placed_fits.values(), key=lambda f: f.fit, default=None),
+                        placed_fits)
     letter = best.letter if best is not None and best.fit <= best.readable else None
-    if letter and any(f.fit < best.fit + AMBIGUOUS for f in placed_fits.values() if f is not best):
+    if letter and any(f.fit < best.fit + AMBIGUOUS for f in placed_fits.values()
+                      if f is not best and f.letter != TWINS.get(letter)):
         letter = None       # the second-best letter's fit is exact (REFINED >= 2)
     return Reading(letter, best, placed_fits)
+
+
+def upright_twin(best, fits):
+    """`best`, or its twin (TWINS) where that reads too, lying about a
+    quarter-turn from it and nearer level."""
+    twin = fits.get(TWINS.get(best.letter)) if best is not None else None
+    if twin is not None and twin.fit <= twin.readable and abs(twin.tilt) < abs(best.tilt) and \
+            abs(abs(twin.tilt - best.tilt) - 90) <= TWIN_TURN:
+        return twin
+    return best
 
 
 def _readable(found):

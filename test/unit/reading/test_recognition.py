@@ -179,6 +179,19 @@ def test_m_and_n_drawn_as_zigzags_with_no_upright_leg(letter, zigzag):
     assert reading.letter == letter, reading.best
 
 
+@pytest.mark.parametrize('letter', ['N', 'Z'])
+@pytest.mark.parametrize('tilt', [-40, -20, 20, 40])
+@pytest.mark.parametrize('aspect', [0.6, 1.8])
+def test_n_and_z_tilted_up_to_40_degrees_each_read_as_itself_not_its_quarter_turned_twin(
+        letter, tilt, aspect):
+    """An N tilted 40 degrees is a Z tilted -50 as much: the one nearer level
+    is read (recognition.TWINS), in a family the strokes have never seen."""
+    ink = turned(touching('rowmans', letter, aspect), tilt, (0.0, 0.0))
+    twin = 'Z' if letter == 'N' else 'N'
+    assert read(ink).letter == letter
+    assert read_row(ink, twin)[0].letter != twin
+
+
 def barred_j(hook_left=True, curl=180):
     """A J with a bar across its top, as people write it: the bar, then the
     stem down from its middle and a half circle round to the left (or on,
