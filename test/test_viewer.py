@@ -127,13 +127,19 @@ class ViewerInABrowser(unittest.TestCase):
     @classmethod
     def start_viewer(cls):
         viewer = NodeProcess('turtle_letters', 'view.py', f'_port:={cls.port}')
-        wait_until(lambda: cls.serving(), 30, 'the viewer serving its page', viewer.output)
+        wait_until(lambda: cls.serving(viewer, cls.port), 30, 'the viewer serving its page',
+                   viewer.output)
         return viewer
 
-    @classmethod
-    def serving(cls, url=None):
+    @staticmethod
+    def serving(viewer, port):
+        """Whether `viewer` (a NodeProcess) says it serves on `port`, and a
+        page is there: a port found free may be taken by another test's
+        server before the viewer binds it (the viewer then says so, and ends)."""
+        if f':{port}/' not in viewer.output():
+            return False
         try:
-            return urllib.request.urlopen(url or cls.url, timeout=1).status == 200
+            return urllib.request.urlopen(f'http://127.0.0.1:{port}/', timeout=1).status == 200
         except OSError:
             return False
 
@@ -206,7 +212,7 @@ class ViewerInABrowser(unittest.TestCase):
         posed = NodeProcess('turtle_letters', 'view.py', f'_port:={port}', '_ink:=false',
                             '__name:=posed_view')
         try:
-            wait_until(lambda: self.serving(f'http://127.0.0.1:{port}/') and connections(
+            wait_until(lambda: self.serving(posed, port) and connections(
                 '/posed_view', '/turtle1/color_sensor', 'i'), 30,
                 'the viewer from poses serving, and on the colour sensor', posed.output)
             rospy.ServiceProxy('/clear', Empty)()
@@ -294,7 +300,7 @@ class ViewerInABrowser(unittest.TestCase):
                               '__name:=crowded_view')
         first = self.driver.current_window_handle
         try:
-            wait_until(lambda: self.serving(f'http://127.0.0.1:{port}/'), 30,
+            wait_until(lambda: self.serving(crowded, port), 30,
                        'the second viewer serving', crowded.output)
             self.driver.switch_to.new_window('tab')
             self.driver.get(f'http://127.0.0.1:{port}/')
