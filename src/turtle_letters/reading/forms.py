@@ -30,8 +30,7 @@ _SQUARE_P = [(0, 0), (0, 1), (0.6, 1), (0.6, 0.5), (0, 0.5)]
 _SQUARE_O = [(0, 0), (0, 1), (0.6, 1), (0.6, 0), (0, 0)]
 _ARCH = [(0.3 - 0.3 * math.cos(math.radians(a)), 0.7 + 0.3 * math.sin(math.radians(a)))
          for a in range(0, 181, 15)]      # an A's round top
-_CURL = [(0.27 + 0.23 * math.cos(math.radians(a)), 0.27 + 0.23 * math.sin(math.radians(a)))
-         for a in range(0, -226, -15)]    # a J's hook, on past its half circle
+_CURL = _round((0.27, 0.27), 0.23, 0, -225)     # a J's hook, on past its half circle
 _BOWL = _round((0.45, 0.55), 0.45, 0, 360)     # a small a's round bowl, from its right, once round
 # a B of one loop: up its straight back, round its top bowl to a point inside, round the bottom
 _LOOP_B = [(0, 0.27)] + _round((0.27, 0.73), 0.27, 180, -75) + \
