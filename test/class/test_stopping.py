@@ -12,7 +12,7 @@ import xml.etree.ElementTree as ElementTree
 
 import pytest
 
-from support.grading import leftovers, sandbox_processes, started_grading
+from support.grading import grade_class, leftovers, sandbox_processes, started_grading
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LENA = os.path.join(HERE, 'submissions', 'c03_lena')
@@ -32,10 +32,13 @@ def a_class(top, size):
             '--out', str(top / 'out'), '--jobs', '2']
 
 
+def namespaces_listed():
+    return subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
+                          universal_newlines=True).stdout
+
+
 def sandbox_running():
-    listed = subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
-                            universal_newlines=True).stdout
-    return 'tlgrade' in listed
+    return 'tlgrade' in namespaces_listed()
 
 
 def stop(grading, how):
@@ -142,3 +145,29 @@ def test_a_second_ctrl_c_forces_it_out_and_still_leaves_nothing(tmp_path):
     assert code == 130 and took < STOPS_WITHIN, printed
     assert 'forced' in printed and 'Traceback' not in printed, printed
     assert leftovers(before) == ([], [])
+
+
+def test_a_grader_killed_outright_leaves_what_the_next_one_removes(tmp_path):
+    """SIGKILL (or a lost session, a stopped machine) leaves the grader no
+    time to clean up: its sandbox's namespace, cgroups and folders stay,
+    named by its pid, until the next grader removes them and says so."""
+    from turtle_letters.isolation.stale import left_behind
+    before = sandbox_processes()
+    killed = started_grading(*a_class(tmp_path / 'killed', 1))
+    deadline = time.monotonic() + 60
+    while f'tlgrade{killed.pid}n' not in namespaces_listed() and \
+            time.monotonic() < deadline:
+        time.sleep(0.2)
+    time.sleep(2)       # into the build
+    os.killpg(killed.pid, signal.SIGKILL)
+    killed.wait()
+    left = left_behind()    # its own: it removed any earlier grader's as it started
+    assert all(left) and all(str(killed.pid) in name for name in sum(left, [])), left
+    again = grade_class(*a_class(tmp_path / 'again', 1))
+    said = [line for line in again.stdout.splitlines() if 'graders no longer running' in line]
+    assert said == [f'grade_class.py: removed what graders no longer running left '
+                    f'(pid {killed.pid}): {len(left[0])} network namespaces, '
+                    f'{len(left[1])} cgroups, {len(left[2])} folders'], again.stdout
+    assert rows_of(tmp_path / 'again' / 'out') == [('s1', 'pass')], again.stdout
+    assert left_behind() == ([], [], []) and leftovers(before) == ([], [])
+

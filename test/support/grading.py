@@ -15,6 +15,9 @@ from support.children import readable_env
 # turtle_letters.isolation.sandbox.USER(S): the submissions' users, then the grader's beside them
 SANDBOX_USERS = range(2000000000, 2000000000 + 2 * 256)
 CGROUPS = '/sys/fs/cgroup'
+# The folders a grading makes in /tmp (a submission's work folder, and the
+# grader's folders beside it, are in its sandbox's)
+KINDS_OF_FOLDER = ('turtle_letters_sandbox_', 'turtle_letters_gradescope_')
 
 
 def package_caps():
@@ -86,15 +89,15 @@ def leftovers(before=None):
     """What a grading left: processes from its work folders or of the
     sandbox's users (but those in `before`); network namespaces, cgroups,
     the sandboxes' tmpfs mounts, and work or scratch folders."""
-    processes = subprocess.run(['pgrep', '-af', 'turtle_letters_grade_'], stdout=subprocess.PIPE,
+    processes = subprocess.run(['pgrep', '-af', '|'.join(KINDS_OF_FOLDER)], stdout=subprocess.PIPE,
                                universal_newlines=True).stdout.splitlines()
     processes += [f'{pid} {line}' for pid, line in sandbox_processes().items()
                   if pid not in (before or {})]
     namespaces = subprocess.run(['ip', 'netns', 'list'], stdout=subprocess.PIPE,
                                 universal_newlines=True).stdout
     cgroups = glob.glob(f'{CGROUPS}/**/tlgrade*', recursive=True)
-    folders = glob.glob(os.path.join(tempfile.gettempdir(), 'turtle_letters_grade_*')) + \
-        glob.glob(os.path.join(tempfile.gettempdir(), 'turtle_letters_sandbox_*'))
+    folders = [folder for kind in KINDS_OF_FOLDER
+               for folder in glob.glob(os.path.join(tempfile.gettempdir(), f'{kind}*'))]
     with open('/proc/mounts') as f:
         folders += [line.split()[1] for line in f if line.startswith('turtle_letters_sandbox ')]
     return processes, [n for n in namespaces.split() if n.startswith('tlgrade')] + cgroups + \

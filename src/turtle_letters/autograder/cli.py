@@ -29,7 +29,7 @@ import time
 import rospkg
 
 from ..isolation.files import shown
-from ..isolation import sandbox
+from ..isolation import sandbox, stale
 from . import driver, reports, rubric as rubrics, session
 from .roster import RosterError, Student
 from .roster import expected as expected_of
@@ -388,6 +388,9 @@ def main(argv=None):
     if problem:
         print(f'grade_class.py: {problem}; nothing was graded', file=sys.stderr)
         return 2
+    swept = stale.sweep() if args.isolated else ''
+    if swept:
+        print(f'grade_class.py: {swept}', file=sys.stderr)
     try:
         rubric = rubrics.load(default_rubric(), args.rubric)
     except rubrics.RubricError as e:

@@ -20,7 +20,6 @@ import pty
 import shutil
 import signal
 import subprocess
-import tempfile
 import threading
 import time
 
@@ -310,14 +309,14 @@ class Terminal:
 
 class Watcher:
     """watch.py in the submission's network namespace: its events, as they
-    come. Its ROS home and its errors are in a folder of the grader's own,
-    which the submission cannot reach."""
+    come. Its ROS home and its errors are in a folder of the grader's own
+    beside the sandbox, which the submission cannot reach."""
 
     def __init__(self, box, limits):
         self.cgroup = box.beside.limited('a', _cgroup_limits(
             limits.watcher_memory, limits.watcher_processes, WATCHER_SAYS)) if box.isolated else None
         self.most = limits.events
-        self.home = tempfile.mkdtemp(prefix='turtle_letters_watch_')
+        self.home = box.beside.folder(as_user=False)
         env = dict(os.environ, ROS_MASTER_URI=box.master_uri, ROS_IP='127.0.0.1',
                    ROS_HOME=self.home, PYTHONUNBUFFERED='1')
         env.pop('ROS_LOG_DIR', None)

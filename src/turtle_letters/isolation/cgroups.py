@@ -30,6 +30,11 @@ def _own_path(controller):
     return '/'
 
 
+def cgroup_roots():
+    """Where each cgroup hierarchy is mounted."""
+    return sorted({where for where, kind, _ in _mounts() if kind in ('cgroup', 'cgroup2')})
+
+
 def cgroup_parents():
     """('v2', {controller: folder}) or ('v1', ...): where a submission's
     cgroups are made: at the top of cgroup v2, when it has V2_CONTROLLERS,
@@ -140,38 +145,49 @@ class Cgroup:
             return self.limits['cpu'][1](self.limits['cpu'][0])
         return ''
 
-    def processes(self):
-        pids = set()
-        for folder in set(self.folders.values()):
-            with open(os.path.join(folder, 'cgroup.procs')) as f:
-                pids.update(int(pid) for pid in f.read().split())
-        return pids
-
     def kill(self):
         """Kills every process in it (those it forks meanwhile too)."""
-        for _ in range(100):
-            try:
-                left = self.processes()
-            except OSError:         # removed meanwhile: nothing is left in it
-                return
-            if not left:
-                return
-            for pid in left:
-                try:
-                    os.kill(pid, signal.SIGKILL)
-                except ProcessLookupError:
-                    pass
-            time.sleep(0.05)
+        kill_in(set(self.folders.values()))
 
     def remove(self):
         """Kills every process in it, then removes it."""
-        self.kill()
-        for folder in sorted(set(self.folders.values())):
-            for _ in range(100):
-                try:
-                    os.rmdir(folder)
-                    break
-                except FileNotFoundError:
-                    break
-                except OSError:
-                    time.sleep(0.05)
+        remove_cgroups(set(self.folders.values()))
+
+
+def _processes(folders):
+    pids = set()
+    for folder in folders:
+        with open(os.path.join(folder, 'cgroup.procs')) as f:
+            pids.update(int(pid) for pid in f.read().split())
+    return pids
+
+
+def kill_in(folders):
+    """Kills every process in the cgroups at `folders`, until none is left."""
+    for _ in range(100):
+        try:
+            left = _processes(folders)
+        except OSError:         # removed meanwhile: nothing is left in it
+            return
+        if not left:
+            return
+        for pid in left:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        time.sleep(0.05)
+
+
+def remove_cgroups(folders):
+    """Kills every process in the cgroups at `folders`, then removes them."""
+    kill_in(folders)
+    for folder in sorted(folders):
+        for _ in range(100):
+            try:
+                os.rmdir(folder)
+                break
+            except FileNotFoundError:
+                break
+            except OSError:
+                time.sleep(0.05)

@@ -29,6 +29,7 @@ from typing import NamedTuple
 
 from .cgroups import Cgroup, CgroupError
 from .files import remove_tree
+from .stale import NAMESPACE, SCRATCH
 
 MASTER_PORT = 11311
 # The users submissions run as, one for each graded at once: ids far above
@@ -250,7 +251,7 @@ class Sandbox:
         self.cpus = [cpu] if cpu is not None else None
         self.user = USER + slot % USERS
         self.hidden = [os.path.abspath(h) for h in hidden if os.path.exists(h)]
-        self.namespace = f'tlgrade{os.getpid()}n{next(_NUMBERS)}'
+        self.namespace = NAMESPACE.format(pid=os.getpid()) + str(next(_NUMBERS))
         port = MASTER_PORT if isolated else _free_port()
         self.master_uri = f'http://127.0.0.1:{port}'
         self.cgroup = self.scratch = self.work = self.beside = None
@@ -258,7 +259,7 @@ class Sandbox:
         self.sessions = []      # process groups started for it
 
     def __enter__(self):
-        self.scratch = tempfile.mkdtemp(prefix='turtle_letters_sandbox_')
+        self.scratch = tempfile.mkdtemp(prefix=SCRATCH.format(pid=os.getpid()))
         self.work = os.path.join(self.scratch, 'work')
         self.beside = Beside(self.scratch, self.namespace, self.user + USERS, self.isolated,
                              self.cpus)
@@ -356,11 +357,13 @@ class Beside:
         return _pinned(self.cpus) + (['ip', 'netns', 'exec', self.namespace] if self.isolated
                                      else []) + run
 
-    def folder(self):
-        """A new folder, its user's alone, gone with the sandbox."""
+    def folder(self, as_user=True):
+        """A new folder, gone with the sandbox (a forced exit's too): its
+        user's alone, or the grader's alone."""
         folder = os.path.join(self.scratch, f'beside{next(self.folders)}')
         os.mkdir(folder, 0o700)
-        os.chown(folder, self.user, self.user)
+        if as_user:
+            os.chown(folder, self.user, self.user)
         return folder
 
     def limited(self, suffix, limits):
