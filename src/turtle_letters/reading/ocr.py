@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 from .ink import box, closed, squarest_turn, thinned, turned
 from .forms import CLEAN
-from .recognition import TWINS, Reading
+from .recognition import TWINS, Reading, twin_farther
 from .rows import letters_of, levels, read_blind, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
@@ -249,9 +249,15 @@ def supports(reading: OcrReading, expected: str, strokes=()) -> bool:
 
 def _twin_fits(reading, expected):
     """Whether the strokes' best fit (recognition.upright_twin's choice) is
-    `expected`'s twin, within the fit it reads at."""
+    `expected`'s twin, within the fit it reads at, and they read it, or
+    `expected` fits only a quarter-turn from it, farther from level. (A
+    DejaVu Serif Bold outline C fit a U at -52 degrees a little better
+    than its own C at 20, read neither, and OCR's C was refused.)"""
     best = reading.best
-    return best is not None and best.letter == TWINS.get(expected) and best.fit <= best.readable
+    if best is None or best.letter != TWINS.get(expected) or best.fit > best.readable:
+        return False
+    own = reading.fits.get(expected)
+    return reading.letter == best.letter or (own is not None and twin_farther(own, best))
 
 
 def plainly_other(reading, expected):

@@ -40,11 +40,14 @@ AMBIGUOUS = 0.005   # another letter fitting within this of the best: the two ca
 RIVAL = 1.4
 WITNESSES = 4       # the ink cells farthest from the last few candidates fitted, kept
 MAX_STRETCH = 3.0   # how far a candidate's width-to-height may be changed, either way
-# N and Z are one shape a quarter-turn apart (a Z at 40 degrees is an N at -50): ink
-# that reads as both, their tilts about a quarter-turn apart (within TWIN_TURN of 90
-# degrees), is the one standing more upright, as a person reads it.
-TWINS = {'N': 'Z', 'Z': 'N'}
+# Letters of one shape a quarter-turn apart (a Z at 40 degrees is an N at -50, a C at
+# 45 a U at -45; a cadet's square forms exactly, any family's nearly): ink that reads
+# as both, their tilts about a quarter-turn apart (within TWIN_TURN of 90 degrees), is
+# the one standing TWIN_LEVEL degrees or more nearer level, as a person reads it; and
+# neither where neither does (a square U at -44 degrees is a square C at 46).
+TWINS = {'N': 'Z', 'Z': 'N', 'C': 'U', 'U': 'C'}
 TWIN_TURN = 15
+TWIN_LEVEL = 5
 # A box this wide for its height is a block I's edge and a square O alike: no letter.
 # (A DejaVu Sans Bold I stretched to 0.48 was credited as the O it was graded against.)
 DOUBTFUL_BOX = (0.3, 0.5)
@@ -323,19 +326,26 @@ def _read(ink, letters, tilts, finer, refined) -> Reading:
                         placed_fits)
     letter = best.letter if best is not None and best.fit <= best.readable else None
     if letter and any(f.fit < best.fit + AMBIGUOUS for f in placed_fits.values()
-                      if f is not best and f.letter != TWINS.get(letter)):
+                      if f is not best and not twin_farther(f, best)):
         letter = None       # the second-best letter's fit is exact (REFINED >= 2)
     return Reading(letter, best, placed_fits)
 
 
 def upright_twin(best, fits):
     """`best`, or its twin (TWINS) where that reads too, lying about a
-    quarter-turn from it and nearer level."""
+    quarter-turn from it and TWIN_LEVEL nearer level."""
     twin = fits.get(TWINS.get(best.letter)) if best is not None else None
-    if twin is not None and twin.fit <= twin.readable and abs(twin.tilt) < abs(best.tilt) and \
-            abs(abs(twin.tilt - best.tilt) - 90) <= TWIN_TURN:
+    if twin is not None and twin.fit <= twin.readable and twin_farther(best, twin):
         return twin
     return best
+
+
+def twin_farther(fit, other):
+    """Whether `fit` is the twin (TWINS) of `other`, about a quarter-turn
+    from it and standing TWIN_LEVEL farther from level."""
+    return fit.letter == TWINS.get(other.letter) and \
+        abs(abs(fit.tilt - other.tilt) - 90) <= TWIN_TURN and \
+        abs(fit.tilt) >= abs(other.tilt) + TWIN_LEVEL
 
 
 def _readable(found):

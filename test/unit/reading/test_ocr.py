@@ -123,6 +123,23 @@ def test_n_and_z_a_quarter_turn_apart_read_as_the_one_standing_nearer_level():
     assert not supports(ocr, 'N', told_apart(ink, as_n))
 
 
+def test_ocr_turned_is_refused_for_a_twin_only_where_the_strokes_see_one():
+    """A DejaVu Serif Bold outline C 1.48 times as wide, tilted 29 degrees,
+    walked in turtlesim's steps: the strokes fit a U at -52 degrees a
+    little better than its C at 20, and read neither. The two are no
+    quarter-turn apart, so the U is no twin the ink is, and OCR's C, read
+    turned back and narrowed, is credited (it was refused)."""
+    from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
+    from turtle_letters.reading.rows import read_row
+    glyph = outline_glyphs(DEJAVU_BOLD[1])['C']
+    ink = as_the_benchmark_draws([[(1.48 * x, y) for x, y in line] for line in glyph],
+                                 5.542, 29.33, 0.00913)
+    strokes = read_row(ink, 'C')
+    assert strokes[0].letter is None and strokes[0].best.letter == 'U', strokes[0].best
+    ocr = read_text(ink, 'C')
+    assert ocr.tilt != 0 and supports(ocr, 'C', told_apart(ink, strokes)), ocr
+
+
 def test_a_row_read_whole_as_plainly_another_text_is_not_cut_into_the_one_expected():
     """A roman duplex CH, its letters touching, 1.4 times as wide, tilted
     16 degrees, walked in turtlesim's steps: cut where QY would be, the
