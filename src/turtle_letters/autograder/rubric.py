@@ -251,9 +251,19 @@ def _letter(facts, rubric):
         return 1.0, (f'drew {facts.expected}, as expected: {ocr_said(facts.ocr)}; its strokes '
                      f'read {strokes}' + _wiped(facts))
     share, line = _letter_read(facts, rubric)
-    disagree = facts.ocr is not None and facts.ocr.text != drawn(facts.readings) and \
-        _shapes(facts.readings)
-    return share, line + (f' ({ocr_said(facts.ocr)})' if disagree else '') + _wiped(facts)
+    shapes = _shapes(facts.readings)
+    disagree = facts.ocr is not None and facts.ocr.text != drawn(facts.readings) and shapes
+    return share, line + (f' ({ocr_said(facts.ocr)})' if disagree else '') + \
+        (_teleported(facts) if shapes and share < 1 else '') + _wiped(facts)
+
+
+def _teleported(facts):
+    """Words for ink teleports laid beside the ink read ('' if none did):
+    what the student sees drawn is more than what is read (a class's M laid
+    by teleports, the dot of its i driven)."""
+    jumps = facts.drawing.jump_ink if facts.drawing else 0
+    return (f'; {jumps} teleport{"s" if jumps > 1 else ""} with the pen down laid ink '
+            f'no letter is read from') if jumps else ''
 
 
 def _letter_read(facts, _):

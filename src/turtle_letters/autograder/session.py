@@ -121,18 +121,22 @@ def build(box, limits):
         return Step(False, f'the build was stopped: {limit}' if limit else
                     f'the build did not end within {limits.build:g} s'), text
     if process.returncode != 0:
-        return Step(False, f'catkin_make failed: {first_error(text)}',
-                    time.monotonic() - started), text
+        error = first_error(text).replace(os.path.join(box.work, 'ws', 'src', ''), '')
+        return Step(False, f'catkin_make failed: {error}', time.monotonic() - started), text
     return Step(True, f'built in {time.monotonic() - started:.1f} s',
                 time.monotonic() - started), text
 
 
 def first_error(text):
     """The build's first error, in its own words: a compiler's line, or
-    CMake's message under its "CMake Error at" line (make's "Error 2" is
-    only its echo)."""
+    CMake's message under its "CMake Error at" line, or catkin's reasons
+    under its "Error(s) in package" line (make's "Error 2" is only its
+    echo)."""
     lines = text.splitlines()
     for i, line in enumerate(lines):
+        if line.startswith('Error(s) in package'):     # catkin_pkg: one reason a line below
+            reasons = itertools.takewhile(bool, (m.strip() for m in lines[i + 1:i + 6]))
+            return ' '.join([line.strip(), *reasons])
         if line.startswith('CMake Error'):
             message = ' '.join(m.strip() for m in itertools.takewhile(
                 lambda m: m.startswith(' ') or not m, lines[i + 1:i + 6]) if m.strip())

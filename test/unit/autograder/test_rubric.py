@@ -175,6 +175,16 @@ def test_impostors_teleported_ink_and_a_broken_world_fail_the_driving():
     assert broken['The drawing ends, the turtle standing still'][0] == 0
 
 
+def test_a_letter_not_read_says_what_teleports_laid_beside_the_ink_read():
+    """A real class's M laid by teleports, its i's dot driven: the row
+    says why the letters the student sees are not read."""
+    letter = 'The letter drawn is the expected one'
+    inked = Drawing([L_PATH], 1.0, 5.0, 90, [], 5, 4)
+    assert scores_of(grade(facts(inked, expected='M'), load(DEFAULT)))[letter] == (
+        0, 'drew L, expected M; 4 teleports with the pen down laid ink no letter is read from')
+    assert scores_of(grade(facts(inked), load(DEFAULT)))[letter] == (25, 'drew L, as expected')
+
+
 def test_a_drawing_that_never_ends():
     lines = scores_of(grade(facts(Drawing([L_PATH], 1.0, None, 900, [])), load(DEFAULT)))
     assert lines['The drawing ends, the turtle standing still'][0] == 0

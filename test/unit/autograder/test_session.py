@@ -97,6 +97,11 @@ def test_a_failed_build_says_its_first_error_in_its_own_words():
     gcc = "make[2]: *** [x] Error 1\nsrc/main.cpp:58:27: error: no matching function\n"
     assert first_error(gcc) == 'src/main.cpp:58:27: error: no matching function'
     assert first_error('nothing useful\n') == 'see log.txt'
+    # catkin_pkg's reasons come on the lines under its own (a real class's package.xml)
+    catkin = ("Error(s) in package 'ws/src/lab/package.xml':\n"
+              "Invalid email \"a@b\" for person \"a\"\n\n-- Configuring incomplete\n")
+    assert first_error(catkin) == ("Error(s) in package 'ws/src/lab/package.xml': "
+                                   "Invalid email \"a@b\" for person \"a\"")
 
 
 def handed_in(tmp_path, name, files):
