@@ -44,7 +44,9 @@ CONCLUSIONS = {
     'c11_zoe': ('Z', '', 'fail', 'no submission'),
     'c12_ursula': ('U', 'I', 'fail', 'turtlesim was cleared'),     # the canvas left: one stroke
     'c13_victor': ('V', 'V', 'pass', 'drives the turtle and published "P"'),
-    'c14_lars': ('L', 'L', 'pass', 'every criterion met'),     # a pause of 3 s between strokes
+    # a pause of 3 s between strokes; his talker in an xterm, his turtlesim in a
+    # gnome-terminal (launch-prefix), as on his desktop
+    'c14_lars': ('L', 'L', 'pass', 'every criterion met'),
     'c15_carmen': ('C', 'C', 'pass', 'a turtle moved without the trigger'),    # draws at launch
     'c16_noah': ('N', 'N', 'pass', 'no launch file: the grader started its executables '
                                    '(keyboard.py, n_controller.py)'),

@@ -8,7 +8,8 @@ cmd_vel and sends nothing (tried alone after those that acted), a workspace with
 sibling package that cannot build here, and a Python package whose
 CMakeLists.txt names another project, and a package whose launch file
 starts turtlesim alone, its letter a shell script without #! that its
-course runs with bash.
+course runs with bash, and one whose controller its launch file starts in
+a terminal this machine lacks (terminator).
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -87,6 +88,9 @@ CONCLUSIONS = {
                                'hw3: the grader started its executables (letters.sh) instead'),
     'o10_turning': ('', 'fail', 'spin_forever.py, idle.py, keyboard.py not run alone: the '
                                 'alone runs had used the 50 s they share'),
+    'o11_prefixed': ('L', 'pass', "error while attempting to run: terminator -x "
+                                  "lab1/scripts/l_controller.py; the grader ran its "
+                                  "executables instead (keys.py, l_controller.py)"),
 }
 
 
@@ -94,7 +98,8 @@ CONCLUSIONS = {
 def graded(tmp_path_factory):
     top = tmp_path_factory.mktemp('odd')
     cls, out = str(top / 'class'), str(top / 'out')
-    for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim', 'o8_unbuilt'):
+    for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim', 'o8_unbuilt',
+                 'o11_prefixed'):
         shutil.copytree(LENA, os.path.join(cls, name))
     nest(os.path.join(cls, 'o1_deep', 'lab1'), 1100)
     os.mkfifo(os.path.join(cls, 'o3_fifo', 'lab1', 'scripts', 'pipe'))
@@ -109,6 +114,12 @@ def graded(tmp_path_factory):
     with open(cmake) as f:      # a project named otherwise than its package: catkin refuses it
         text = f.read().replace('project(lab1)', 'project(lab_one)')
     with open(cmake, 'w') as f:
+        f.write(text)
+    launch = os.path.join(cls, 'o11_prefixed', 'lab1', 'launch', 'start.launch')
+    with open(launch) as f:     # a window of its own, in a terminal no machine of ours has
+        text = f.read().replace('name="l_controller"/>',
+                                'name="l_controller" launch-prefix="terminator -x"/>')
+    with open(launch, 'w') as f:
         f.write(text)
     shutil.copytree(PRINTER, os.path.join(cls, 'h7_printer'))
     shutil.copytree(NOAH, os.path.join(cls, 'o6_three'))
@@ -133,7 +144,7 @@ def graded(tmp_path_factory):
         with open(path, 'w') as f:
             f.write(text)
         os.chmod(path, 0o644)
-    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_')    # Müller (o2) is on no roster
+    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11')   # Müller (o2): no roster
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +

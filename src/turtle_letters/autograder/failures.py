@@ -9,6 +9,7 @@ from ..isolation.files import read_plain
 from . import observations as seen
 
 ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
+RLEXCEPTION = 'roslaunch: '    # how a reason roslaunch_exception gives begins
 LOG_TAIL = 20000        # bytes read of a node's log file, from its end
 LOGS_READ = 40          # log files read at most
 LOG_DEPTH = 2           # folders under ~/.ros/log looked in
@@ -21,6 +22,8 @@ def why_not_launched(output, events, work):
     graph = seen.last_graph(events)
     if refused:
         return refused[0][len('ERROR: '):]
+    if roslaunch_exception(output, work):
+        return roslaunch_exception(output, work)
     died = first_death(output, work)
     if died and graph is not None:
         return died
@@ -30,6 +33,26 @@ def why_not_launched(output, events, work):
         return f'no node subscribed to /chatter, and no turtle moved: {waits_for_calls(graph)}'
     return ('no node subscribed to /chatter, and no turtle moved: is the controller started by '
             'the launch file?')
+
+
+def roslaunch_exception(output, work=''):
+    """roslaunch's own reason for ending ('RLException: ...'), with the
+    command it names on the line below, or '' (a launch-prefix of a program
+    the machine lacks: 'No such file or directory' ... 'gdb -ex run'); the
+    command as the student knows it: its node's path in their package, no
+    remappings roslaunch adds."""
+    lines = output.splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith('RLException: '):
+            said = line[len('RLException: '):].strip()
+            below = [m.strip() for m in lines[i + 1:i + 4] if m.strip()]
+            if not (said.endswith(':') and below):
+                return f'{RLEXCEPTION}{said}'
+            inside = os.path.join(work, 'ws', 'src', '') if work else None
+            words = [w.replace(inside, '') if inside else w for w in below[0].split()
+                     if not w.startswith('__')]
+            return f'{RLEXCEPTION}{said} {" ".join(words)}'
+    return ''
 
 
 def waits_for_calls(graph):

@@ -17,12 +17,12 @@ from xml.sax.saxutils import quoteattr
 
 from ..isolation.sandbox import GiB, Caps, Sandbox
 from . import observations as seen
-from .failures import talker_failure, why_not_launched, why_still
+from .failures import RLEXCEPTION, talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, Reader, RunningScripts
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
                          python_scripts, scripts, started_packages, wrap)
-from .world import Lab, course_environment, stand_in, stand_in_started
+from .world import Lab, course_environment, stand_in, stand_in_started, terminal_stand_ins
 
 POLL = 0.1                  # s between looks at what the watcher saw
 BASH = ' launch-prefix="bash"'  # a shell script without #! is run with bash, as a TA types it
@@ -83,8 +83,9 @@ def _env(work, master_uri, isolated=True):
 
 def prepare(package, work):
     """The work folder: the package's copy in a workspace, a home, a folder
-    for temporary files, and `python` for scripts that say
-    `#!/usr/bin/env python` (Noetic's is python3). The scripts handed in
+    for temporary files, `python` for scripts that say
+    `#!/usr/bin/env python` (Noetic's is python3) and the terminals a
+    launch-prefix may open (world.TERMINALS). The scripts handed in
     without the execute bit, made executable (a TA's fallback)."""
     for folder in ('ws/src', 'home', 'tmp', 'bin'):
         os.makedirs(os.path.join(work, folder), exist_ok=True)
@@ -92,6 +93,7 @@ def prepare(package, work):
     if package.loose:
         wrap(copied)
     os.symlink('/usr/bin/python3', os.path.join(work, 'bin', 'python'))
+    terminal_stand_ins(os.path.join(work, 'bin'))
     return made_executable(copied)
 
 
@@ -160,8 +162,9 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     """Copy, build, launch, type P, watch: the whole run of one submission,
     in `box`; with a TA's fallbacks, each costing `launches` alone and said
     there: scripts handed in without the execute bit run all the same, and
-    a launch file that cannot start its nodes (a wrong pkg or type) gives
-    way to the package's executables, started as without a launch file.
+    a launch file that cannot start its nodes (a wrong pkg or type, a
+    launch-prefix of a program the machine lacks) gives way to the
+    package's executables, started as without a launch file.
     Scripts handed in without a package.xml are wrapped in one and run,
     costing `builds` alone."""
     result = Run(package)
@@ -210,9 +213,11 @@ def _unbuilt(box, limits, result):
 
 
 def _refused(result):
-    """Whether roslaunch refused to start a node of the package's launch file."""
+    """Whether roslaunch refused to start a node of the package's launch
+    file, or ended on its own exception (a launch-prefix of a program the
+    machine lacks, XML it cannot read: failures.roslaunch_exception)."""
     return bool(result.package.launch) and result.launch is not None and \
-        not result.launch.ok and result.launch.says.startswith(REFUSAL)
+        not result.launch.ok and result.launch.says.startswith((REFUSAL, RLEXCEPTION))
 
 
 def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:

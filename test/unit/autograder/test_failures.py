@@ -45,6 +45,14 @@ def test_why_the_lab_did_not_come_up():
     assert 'no node subscribed to /chatter' in why_not_launched('', [graph], '')
     assert why_not_launched(DIED, [graph], '') == \
         "talker died: NameError: name 'raw_input' is not defined"
+    # roslaunch ends on a launch-prefix this machine lacks: its words, and what it ran
+    lacking = ("RLException: Roslaunch got a 'No such file or directory' error while "
+               "attempting to run:\n\ngdb -ex run --args /w/ws/src/p/draw.py __name:=draw "
+               "__log:=/w/home/.ros/log/1/draw-1.log\n"
+               "The traceback for the exception was written to the log file\n")
+    assert why_not_launched(lacking, [graph], '/w') == (
+        "roslaunch: Roslaunch got a 'No such file or directory' error while attempting to "
+        "run: gdb -ex run --args p/draw.py")
 
 
 def test_why_the_turtle_never_moved(tmp_path):
