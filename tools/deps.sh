@@ -5,14 +5,15 @@ source "$(dirname "$0")/env.sh"
 
 # On every platform: the compiler catkin's top-level CMake project needs, and
 # what the tests and the headless run use. numpy, tf and tf2 are also what a
-# course's ROS Noetic desktop machine offers the student code the grader runs;
+# course's ROS Noetic desktop machine offers the student code the grader runs,
+# and matplotlib (rqt_plot's, in every desktop install) only that;
 # Tesseract reads the letters a person sees, scipy measures how far ink lies
 # from a letter's strokes; fonttools with Liberation's and DejaVu's bold fonts
 # give block letters (the reader's, and the benchmark's).
 COMMON="bubblewrap g++ git hershey-fonts-data iproute2 python3-numpy python3-pytest python3-pyqt5
         python3-tqdm python3-yaml python3-tornado tmux tesseract-ocr tesseract-ocr-eng
         python3-tesserocr python3-pil python3-fonttools fonts-dejavu-core fonts-liberation
-        python3-scipy"
+        python3-scipy python3-matplotlib"
 if [ -d /opt/ros/noetic ]; then
   # Ubuntu 20.04 with ROS Noetic: the real turtlesim. (Its chromium is a snap:
   # the viewer's browser test says it has no chromium-driver there, and skips.)
