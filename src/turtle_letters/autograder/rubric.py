@@ -6,6 +6,7 @@ from typing import Dict, List, NamedTuple, Optional
 import yaml
 
 from ..isolation.files import shown
+from ..reading.cleanness import strays
 from ..reading.ocr import OcrReading, said as ocr_said, supports
 from ..reading.recognition import Reading
 from .observations import Drawing, chatter_peak, own_triggers
@@ -53,7 +54,7 @@ class Rubric(NamedTuple):
     pass_score: float
     required: List[str]             # criteria a pass needs every point of
     points: Dict[str, float]        # criterion: points, in order
-    full: float                     # accuracy earning every point (share of the height)
+    full: float                     # strays earning every accuracy point (share of the height)
     none: float                     # ... and none
     limits: Limits
 
@@ -301,16 +302,23 @@ def _small_l(text, expected):
 
 
 def _accuracy(facts, rubric):
+    """How cleanly the ink makes the letters credited (reading.cleanness),
+    not how close it lies to any font: the worse of its wobble and its
+    gap, full to none linearly, a share for each letter in its place."""
     right = _right(facts) if _letter(facts, rubric)[0] > 0 else []
     if not right:
         return 0.0, f'not scored: {_letter(facts, rubric)[1]}'
-    fits = [r.fits[e].fit for r, e in right]
-    shares = [min(1.0, max(0.0, (rubric.none - fit) / (rubric.none - rubric.full))) for fit in fits]
-    share = sum(shares) / max(len(_shapes(facts.readings)), len(facts.expected))
+    stray = strays(facts.drawing.strokes)
+    worst = max(stray.wobble, stray.gap)
+    share = min(1.0, max(0.0, (rubric.none - worst) / (rubric.none - rubric.full))) * \
+        len(right) / max(len(_shapes(facts.readings)), len(facts.expected))
+    gap = (f'a line misses itself by {100 * stray.gap:.1f}% where it comes back' if stray.gap
+           else 'its loops close')
     tilts = sorted({r.fits[e].tilt for r, e in right} - {0.0}, key=abs)
     tilted = f', drawn {abs(tilts[-1]):g} degrees off level' if tilts else ''
-    return share, (f'worst deviation {100 * max(fits):.1f}% of the letter\'s height (every point '
-                   f'at {100 * rubric.full:g}% or less, none from {100 * rubric.none:g}%){tilted}')
+    return share, (f'its strokes stray {100 * stray.wobble:.1f}% of its height from the lines '
+                   f'and arcs they draw, and {gap} (every point at {100 * rubric.full:g}% or '
+                   f'less, none from {100 * rubric.none:g}%){tilted}')
 
 
 def _ends(facts, rubric):

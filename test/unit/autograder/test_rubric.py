@@ -1,5 +1,6 @@
 """The rubric: the package's defaults, an instructor's file over them, and
 what each kind of run earns under it, criterion by criterion."""
+import math
 import os
 import re
 
@@ -8,9 +9,11 @@ import pytest
 from turtle_letters.autograder.observations import Drawing
 from turtle_letters.autograder.rubric import CRITERIA, Facts, Limits, RubricError, grade, load
 from turtle_letters.autograder.session import Step
+from turtle_letters.reading.cleanness import strays
 from turtle_letters.reading.ocr import read_text
 from turtle_letters.reading.rows import read_row
 
+from support.cadet_paths import arc, driven, forward
 from support.glyph_rows import row
 
 DEFAULT = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'config', 'rubric.yaml')
@@ -115,15 +118,26 @@ def test_the_wrong_letter_earns_no_accuracy():
     assert lines['Its accuracy'][0] == 0
 
 
-def test_accuracy_falls_linearly_between_full_and_none():
-    """A stem bowed 0.2 m off a 2 m L: about 10% off the nearest form of L
-    (any of them), and the points fall linearly from 5% (20) to 15% (0)."""
-    bowed = [(1.0, 3.0), (1.2, 2.0), (1.0, 1.0), (2.2, 1.0)]
-    given = facts(Drawing([bowed], 1.0, 5.0, 9, []))
-    fit = given.readings[0].fits['L'].fit
-    score = scores_of(grade(given, load(DEFAULT)))
-    assert 0.07 < fit < 0.12
-    assert score['Its accuracy'][0] == pytest.approx(20 * (0.15 - fit) / 0.10, abs=0.01)
+def test_accuracy_is_how_cleanly_the_ink_makes_its_letter_not_how_close_to_a_font():
+    """A barred J with a round hook, lines and arcs as a turtle drives them:
+    12% of its height off the nearest J of the readers' forms, and every
+    point; an L whose stem weaves 6 cm either side: the points fall
+    linearly from 2% of the height (20) to 10% (0) of how far it strays."""
+    j = [driven([forward(2.0), arc(0.5, -math.pi)], 2.0, 3.0, -math.pi / 2), [(1.0, 3.0),
+                                                                             (3.0, 3.0)]]
+    barred = facts(Drawing(j, 1.0, 5.0, 9, []), expected='J')
+    assert barred.readings[0].fits['J'].fit > 0.1
+    points, said = scores_of(grade(barred, load(DEFAULT)))['Its accuracy']
+    assert points == 20 and said.startswith(
+        "its strokes stray 0.0% of its height from the lines and arcs they draw, and its "
+        "loops close (every point at 2% or less, none from 10%)")
+    stem = [(1.0 + 0.06 * math.sin(2 * math.pi * k / 40), 3.0 - k * 0.01) for k in range(201)]
+    woven = facts(Drawing([stem + [(1.0 + k * 0.01, 1.0) for k in range(1, 121)]], 1.0, 5.0,
+                          9, []))
+    wobble = strays(woven.drawing.strokes).wobble
+    assert woven.readings[0].letter == 'L' and 0.02 < wobble < 0.04
+    assert scores_of(grade(woven, load(DEFAULT)))['Its accuracy'][0] == pytest.approx(
+        20 * (0.10 - wobble) / 0.08, abs=0.01)
 
 
 def test_a_limit_of_the_sandbox_fails_the_submission_in_words():
