@@ -131,15 +131,19 @@ def picture(out, student_id, facts):
         return None
     from ..grading.picture import draw_ink
     right = credited(facts)
-    letters = [(e if r.letter == e else f'{e} (OCR)', r.fits[e].strokes)
+    # a letter OCR credits is drawn as the strokes fit it only where that form reads
+    letters = [(e, r.fits[e].strokes) if r.letter == e else
+               (f'{e} (OCR)', r.fits[e].strokes if r.fits[e].fit <= r.fits[e].readable else [])
                for r, e in right if e in r.fits]
     letters += [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
                 if r.letter and all(r is not c for c, _ in right)]
     ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
+    named = ' (one OCR credits named only, where no form of it fits)' if ocr else ''
     caption = (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
                f'{drawn(facts.readings) or "no letter"}{ocr}\n'
                f'credited: {"".join(e for _, e in right) or "none"}; left: the canvas as '
-               f'turtlesim showed it; right: the ink enlarged, each letter read dashed over it')
+               f'turtlesim showed it; right: the ink enlarged, each letter read dashed over '
+               f'it{named}')
     path = os.path.join(folder(out, student_id), 'drawing.png')
     draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, letters, caption)
     return os.path.relpath(path, out)

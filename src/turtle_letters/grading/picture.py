@@ -208,13 +208,14 @@ def draw_ink(path_png, strokes, looks, background, letters, caption):
 
 def _letters_over(painter, letters, view):
     """Each (label, strokes) thin and dashed, in black under white so it
-    shows on any ink, named at its top left."""
+    shows on any ink, named at its top left; a label without strokes (a
+    letter OCR reads that no form fits) in the view's top left, in turn."""
     left, upper, scale, corner, size = view
 
     def px(p):
         return QPointF(left + (p[0] - corner[0]) * scale, upper + (size - (p[1] - corner[1])) * scale)
     painter.setClipRect(QRectF(left, upper, size * scale, size * scale))
-    for label, strokes in letters:
+    for k, (label, strokes) in enumerate(letters):
         for pen in (QPen(QColor('black'), 3), QPen(QColor('white'), 1.5, Qt.DashLine)):
             painter.setPen(pen)
             for stroke in strokes:
@@ -222,7 +223,8 @@ def _letters_over(painter, letters, view):
                     painter.drawLine(px(a), px(b))
                 if len(stroke) == 1:        # a block letter's middle line is points
                     painter.drawEllipse(px(stroke[0]), pen.widthF(), pen.widthF())
-        corner_px = px((min(x for s in strokes for x, _ in s), max(y for s in strokes for _, y in s)))
+        corner_px = px((min(x for s in strokes for x, _ in s), max(y for s in strokes for _, y in s))
+                       ) if any(strokes) else QPointF(left + 2, upper + 18 * (k + 1))
         painter.fillRect(QRectF(corner_px.x(), corner_px.y() - 16, 9 * len(label) + 6, 15),
                          QColor('white'))
         painter.setPen(QColor('black'))

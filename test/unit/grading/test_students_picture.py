@@ -53,6 +53,20 @@ def test_only_the_letters_given_are_drawn_over_the_ink(tmp_path):
     assert black_in_zoom(a) == 0 < black_in_zoom(b)   # the letter's outline, black under white
 
 
+def test_a_letter_no_form_fits_is_named_not_drawn(tmp_path):
+    """A letter OCR credits where no form of it fits the strokes: its name
+    in the enlarged ink's top left, no misfit shape laid over the ink."""
+    strokes, looks = [[(2.0, 2.0), (2.0, 5.0), (3.5, 2.0)]], [(*GREEN, 3)]
+    bare, named = str(tmp_path / 'bare.png'), str(tmp_path / 'named.png')
+    draw_ink(bare, strokes, looks, BACKGROUND, [], 'nothing read')
+    draw_ink(named, strokes, looks, BACKGROUND, [('M (OCR)', [])], 'nothing read')
+    a, b = QImage(bare), QImage(named)
+    changed = [(x, y) for x in range(a.width()) for y in range(a.height())
+               if a.pixel(x, y) != b.pixel(x, y)]
+    assert changed and all(CANVAS_PIXELS + 20 <= x < CANVAS_PIXELS + 100 and y < 100
+                           for x, y in changed)
+
+
 def black_in_zoom(image):
     """How many black pixels the enlarged ink's frame holds, on a grid of 2 px."""
     return sum(colour_at(image, x, y) == (0, 0, 0)
