@@ -303,17 +303,18 @@ def _small_l(text, expected):
 
 def _accuracy(facts, rubric):
     """How cleanly the ink makes the letters credited (reading.cleanness),
-    not how close it lies to any font: the worse of its wobble and its
-    gap, full to none linearly, a share for each letter in its place."""
+    not how close it lies to any font: the worse of its wobble and half its
+    gap (one spot, where a wobble is a whole stroke), full to none linearly,
+    a share for each letter in its place."""
     right = _right(facts) if _letter(facts, rubric)[0] > 0 else []
     if not right:
         return 0.0, f'not scored: {_letter(facts, rubric)[1]}'
     stray = strays(facts.drawing.strokes)
-    worst = max(stray.wobble, stray.gap)
+    worst = max(stray.wobble, stray.gap / 2)
     share = min(1.0, max(0.0, (rubric.none - worst) / (rubric.none - rubric.full))) * \
         len(right) / max(len(_shapes(facts.readings)), len(facts.expected))
-    gap = (f'a line misses itself by {100 * stray.gap:.1f}% where it comes back' if stray.gap
-           else 'its loops close')
+    gap = (f'a line misses itself by {100 * stray.gap:.1f}% where it comes back (counted half)'
+           if stray.gap else 'its loops close')
     tilts = sorted({r.fits[e].tilt for r, e in right} - {0.0}, key=abs)
     tilted = f', drawn {abs(tilts[-1]):g} degrees off level' if tilts else ''
     return share, (f'its strokes stray {100 * stray.wobble:.1f}% of its height from the lines '

@@ -138,6 +138,13 @@ def test_accuracy_is_how_cleanly_the_ink_makes_its_letter_not_how_close_to_a_fon
     assert woven.readings[0].letter == 'L' and 0.02 < wobble < 0.04
     assert scores_of(grade(woven, load(DEFAULT)))['Its accuracy'][0] == pytest.approx(
         20 * (0.10 - wobble) / 0.08, abs=0.01)
+    # an O stopping 0.1 rad short: a gap of 5% of its height, one spot, counted half
+    o = facts(Drawing([driven([(2 * math.pi - 0.1, (2 * math.pi - 0.1) / 2, 2.0)], 2.0, 1.0)],
+                      1.0, 5.0, 9, []), expected='O')
+    gap = strays(o.drawing.strokes).gap
+    assert 0.04 < gap < 0.06
+    assert scores_of(grade(o, load(DEFAULT)))['Its accuracy'][0] == pytest.approx(
+        20 * (0.10 - gap / 2) / 0.08, abs=0.01)
 
 
 def test_a_limit_of_the_sandbox_fails_the_submission_in_words():
