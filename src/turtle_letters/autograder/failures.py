@@ -20,10 +20,9 @@ def why_not_launched(output, events, work):
     """Why the lab's graph did not come up, in one line."""
     refused = [line for line in output.splitlines() if line.startswith('ERROR: cannot launch')]
     graph = seen.last_graph(events)
-    if refused:
-        return refused[0][len('ERROR: '):]
-    if roslaunch_exception(output, work):
-        return roslaunch_exception(output, work)
+    exception = roslaunch_exception(output, work)
+    if refused or exception:
+        return refused[0][len('ERROR: '):] if refused else exception
     died = first_death(output, work)
     if died and graph is not None:
         return died
