@@ -138,7 +138,7 @@ def picture(out, student_id, facts):
     letters += [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
                 if r.letter and all(r is not c for c, _ in right)]
     ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
-    named = ' (one OCR credits named only, where no form of it fits)' if ocr else ''
+    named = ' (one OCR alone reads: named only)' if ocr else ''
     caption = (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
                f'{drawn(facts.readings) or "no letter"}{ocr}\n'
                f'credited: {"".join(e for _, e in right) or "none"}; left: the canvas as '
