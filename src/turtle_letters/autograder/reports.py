@@ -130,23 +130,34 @@ def picture(out, student_id, facts):
     if d is None or not d.strokes:
         return None
     from ..grading.picture import draw_ink
+    path = os.path.join(folder(out, student_id), 'drawing.png')
+    draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, overlay(facts),
+             caption(student_id, facts))
+    return os.path.relpath(path, out)
+
+
+def overlay(facts):
+    """The letters drawn over the enlarged ink, (label, strokes): each
+    credited, as the strokes fit it; one OCR alone credits, named only
+    (no strokes) where no form of it reads; one read but not expected."""
     right = credited(facts)
-    # a letter OCR credits is drawn as the strokes fit it only where that form reads
     letters = [(e, r.fits[e].strokes) if r.letter == e else
                (f'{e} (OCR)', r.fits[e].strokes if r.fits[e].fit <= r.fits[e].readable else [])
                for r, e in right if e in r.fits]
-    letters += [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
-                if r.letter and all(r is not c for c, _ in right)]
+    return letters + [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
+                      if r.letter and all(r is not c for c, _ in right)]
+
+
+def caption(student_id, facts):
+    """The picture's two lines: the letters expected, read and credited,
+    and what each half shows (a letter of the overlay named only, said so)."""
     ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
-    named = ' (one OCR alone reads: named only)' if ocr else ''
-    caption = (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
-               f'{drawn(facts.readings) or "no letter"}{ocr}\n'
-               f'credited: {"".join(e for _, e in right) or "none"}; left: the canvas as '
-               f'turtlesim showed it; right: the ink enlarged, each letter read dashed over '
-               f'it{named}')
-    path = os.path.join(folder(out, student_id), 'drawing.png')
-    draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, letters, caption)
-    return os.path.relpath(path, out)
+    named = ' (one OCR alone reads: named only)' if any(not s for _, s in overlay(facts)) else ''
+    return (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
+            f'{drawn(facts.readings) or "no letter"}{ocr}\n'
+            f'credited: {"".join(e for _, e in credited(facts)) or "none"}; left: the canvas as '
+            f'turtlesim showed it; right: the ink enlarged, each letter read dashed over '
+            f'it{named}')
 
 
 def write_csv(path, rows):

@@ -5,7 +5,10 @@ import json
 import xml.etree.ElementTree as ElementTree
 
 from turtle_letters.autograder import reports
-from turtle_letters.autograder.rubric import Grade, Mark
+from turtle_letters.autograder.observations import Drawing
+from turtle_letters.autograder.rubric import Facts, Grade, Mark
+from turtle_letters.reading.ocr import read_text
+from turtle_letters.reading.rows import read_row
 
 PASSED = Grade([Mark('It builds', 10, 10, 'built'), Mark('Its accuracy', 15, 20, '7% off')],
                25, 30, 'pass', 'Its accuracy: 7% off')
@@ -76,3 +79,16 @@ def test_what_a_submission_names_or_prints_is_shown_plain_in_every_file(tmp_path
 def test_each_line_of_a_log_is_shown_plain_and_capped():
     lines = reports.trimmed('a\x07b\x00c\n' + 'y' * 5000)
     assert lines == ['a b c', 'y' * (reports.LOG_LINE - 1) + '\u2026']
+
+
+
+def test_the_caption_names_no_letter_only_where_ocr_credits_none():
+    """OCR asked, and crediting nothing (a bolt of lightning for an H): the
+    caption says none was credited, and no letter is named only (it said
+    so wherever OCR had been asked)."""
+    bolt = [[(1.0, 1.0), (6.0, 6.0), (9.0, 9.0)], [(4.5, 4.5), (8.0, 4.5), (0.5, 0.3)]]
+    facts = Facts('H', drawing=Drawing(bolt, 1.0, 20.0, 900, []),
+                  readings=read_row(bolt, 'H'), ocr=read_text(bolt, 'H'))
+    assert facts.ocr is not None and reports.overlay(facts) == []
+    said = reports.caption('hanie', facts)
+    assert 'credited: none' in said and 'named only' not in said
