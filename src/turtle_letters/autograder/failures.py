@@ -9,6 +9,7 @@ from ..isolation.files import read_plain
 from . import observations as seen
 
 ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
+FRAME_LINE = re.compile(r'^\s*File "([^"]+)", line (\d+)')    # a Python traceback's
 RLEXCEPTION = 'roslaunch: '    # how a reason roslaunch_exception gives begins
 LOG_TAIL = 20000        # bytes read of a node's log file, from its end
 LOGS_READ = 40          # log files read at most
@@ -107,14 +108,34 @@ def _tail(path):
 
 
 def first_death(output, work):
-    """'NODE died: its last error line', for the first node roslaunch saw
-    die (the line from its log, else from the terminal before it died), or ''."""
+    """'NODE died: its last error line (where in the package)', for the
+    first node roslaunch saw die (the line from its log, else from the
+    terminal before it died), or ''."""
     died = re.search(r'^\[(\S+?)(-\d+)?\] process has died', output, re.MULTILINE)
     if not died:
         return ''
     node = died.group(1)
-    why = last_error(node_logs(work, node)) or last_error(output[:died.start()])
-    return f'{node} died' + (f': {why}' if why else '')
+    for text in (node_logs(work, node), output[:died.start()]):
+        why = last_error(text)
+        if why:
+            return f'{node} died: {why}{in_package(text, work)}'
+    return f'{node} died'
+
+
+def in_package(text, work):
+    """' (PATH, line N)': the last line of the student's own code that the
+    traceback ending `text`'s last error line names, PATH as in their
+    workspace's src; '' where it names none (a Python 2 print is a
+    SyntaxError at its line, which a student finds so)."""
+    lines = text.splitlines()
+    errors = [i for i, line in enumerate(lines) if ERROR_LINE.match(line)]
+    if not errors:
+        return ''
+    start = errors[-2] + 1 if len(errors) > 1 else 0
+    inside = os.path.join(work, 'ws', 'src', '')
+    frames = [m.groups() for m in map(FRAME_LINE.match, lines[start:errors[-1]])
+              if m and m.group(1).startswith(inside)]
+    return f' ({frames[-1][0][len(inside):]}, line {frames[-1][1]})' if frames else ''
 
 
 def talker_failure(output, work):

@@ -93,3 +93,20 @@ def test_a_lab_that_never_came_up_but_offers_a_service_says_so(tmp_path):
     assert why_not_launched('', [graph], str(tmp_path)) == (
         'no node subscribed to /chatter, and no turtle moved: /server waits for a call of '
         '/draw: the package draws only when it is called, not on P')
+
+
+def test_a_death_says_where_in_the_package_its_error_was_raised(tmp_path):
+    """The last frame of the student's own code in the traceback, as a
+    path in their workspace: a runtime error's, and a Python 2 print's
+    SyntaxError (no frame of the grader's or of rospy's is named)."""
+    work = str(tmp_path)
+    runtime = DIED.replace('/tmp/w/', work + '/').replace(
+        'NameError', '  File "/usr/lib/python3/dist-packages/rospy/x.py", line 3, in f\nNameError')
+    assert talker_failure(runtime, work) == ("talker died: NameError: name 'raw_input' is not "
+                                             "defined (turtlebot_lab/scripts/talker.py, line 9)")
+    python2 = (f'  File "{work}/ws/src/VS/src/initials.py", line 20\n    print "x"\n    ^\n'
+               "SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)?\n"
+               '[sagar_initial-2] process has died [pid 23, exit code 1].\n')
+    assert talker_failure(python2, work) == (
+        "sagar_initial died: SyntaxError: Missing parentheses in call to 'print'. Did you mean "
+        "print(...)? (VS/src/initials.py, line 20)")
