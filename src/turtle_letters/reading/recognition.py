@@ -1,4 +1,5 @@
-"""Which letter of A-Z a path draws, at any size, place and aspect. No ROS.
+"""Which letter of A-Z a path draws, at any size and place, stretched up to
+MAX_STRETCH times a form's own width or narrowed as much. No ROS.
 
 Each candidate (each form of a letter, forms.py) is stretched onto the
 path's box, its height and width each on its own, and the two are
