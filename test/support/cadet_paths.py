@@ -2,6 +2,7 @@
 is reached along the ones already drawn (a walk that retraces), and corners
 rounded as closed-loop control rounds them. For the recognition tests."""
 import math
+import random
 
 from turtle_letters.letters.geometry import distance_to_segment
 
@@ -108,3 +109,18 @@ def arc(radius, angle):
     """An arc of `radius` through `angle` radians, in 1 s: counter-clockwise
     for a positive angle, clockwise for a negative one."""
     return radius * abs(angle), angle, 1.0
+
+
+def wandering(turtles=30, steps=3750, seed=3):
+    """Thirty turtles each wandering a minute at 1 m/s in turtlesim's 16 ms
+    steps, turning a little at random, kept on the canvas: 112,500 points."""
+    rng, ink = random.Random(seed), []
+    for _ in range(turtles):
+        x, y, heading, line = rng.uniform(1, 10), rng.uniform(1, 10), rng.uniform(0, 6.3), []
+        for _ in range(steps):
+            heading += rng.uniform(-0.2, 0.25)
+            x = min(11.0, max(0.0, x + 0.016 * math.cos(heading)))
+            y = min(11.0, max(0.0, y + 0.016 * math.sin(heading)))
+            line.append((x, y))
+        ink.append(line)
+    return ink

@@ -12,6 +12,7 @@ THIN = 0.2          # half the width, share of the height, of an outline's band 
 AS_BOX = 0.97       # share of its box a closed line fills: a box (a D with cut corners 0.91)
 CLOSED = 0.03       # share of the height within which a line's ends meet: a contour
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
+LONGEST = 50        # heights of ink a letter is drawn with, at most: more is a flood (flooded)
 
 
 def box(points):
@@ -76,6 +77,21 @@ def thinned(ink, spacing):
         kept = [line[::2] + line[-1:] if len(line) > 2 else line for line in kept]
         kept = kept[::2] if all(len(line) <= 2 for line in kept) else kept
     return kept
+
+
+def flooded(ink, letters=1):
+    """Whether `ink` is longer than LONGEST times its height for each of
+    `letters`: a flood of turtles, no letters. Thinned to MAX_POINTS, its
+    lines would become chords across it that may draw anything (thirty
+    turtles wandering for a minute, cut as a row of two, fit an M within
+    5% of its height). The benchmark's longest letter is a gothic W, 13
+    heights of ink (26 at twice its width)."""
+    points = [p for line in ink for p in line]
+    if len(points) < 2:
+        return False
+    _, _, w, h = box(points)
+    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
+    return length > LONGEST * letters * max(h, w / WIDEST)
 
 
 def turned(lines, degrees, centre):

@@ -22,7 +22,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
-from .ink import box, closed, inside, outline, samples, turned
+from .ink import box, closed, flooded, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
 from .recognition import MOST_TILT, SAMPLE, TILTS, Reading, read
 
@@ -379,9 +379,12 @@ def read_row(ink, expected='') -> List[Reading]:
     reading of all the letters says what each is. Specks and dots are no
     part of it (without_specks), and a letter of a row well under its
     height reads only as Row.reading says (a small o after a J does; a
-    quarter of an S's curve beside a whole U is no I)."""
+    quarter of an S's curve beside a whole U is no I). A flood of ink
+    (ink.flooded) is no letter, nor a shape of one."""
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
+    if flooded(ink, max(1, count)):
+        return [Reading(None, None, {}) for _ in range(max(1, count))]
     if count <= 1:
         return [Row(ink).reading(ink, exact=expected if isinstance(expected, str) else '')]
     if not isinstance(expected, str):

@@ -13,7 +13,7 @@ from turtle_letters.reading.cleanness import strays
 from turtle_letters.reading.ocr import read_text
 from turtle_letters.reading.rows import read_row
 
-from support.cadet_paths import arc, driven, forward
+from support.cadet_paths import arc, driven, forward, wandering
 from support.glyph_rows import row
 
 DEFAULT = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'config', 'rubric.yaml')
@@ -204,6 +204,17 @@ def test_a_letter_not_read_says_what_teleports_laid_beside_the_ink_read():
     assert scores_of(grade(facts(inked, expected='M'), load(DEFAULT)))[letter] == (
         0, 'drew L, expected M; 4 teleports with the pen down laid ink no letter is read from')
     assert scores_of(grade(facts(inked), load(DEFAULT)))[letter] == (25, 'drew L, as expected')
+
+
+def test_a_flood_of_turtles_is_said_to_be_one_not_nothing_drawn():
+    """Thirty turtles wandering a minute: no letter, nor 'nothing was
+    drawn' (the flood's readings have no shape), nor accuracy."""
+    scores = scores_of(grade(facts(Drawing(wandering(), 1.0, 60.0, 9000, []), expected='MF',
+                                   ocr=True), load(DEFAULT)))
+    assert scores['The letter drawn is the expected one'] == (
+        0, 'no letter is read from a flood of ink: more than 50 times its height for each '
+           'letter expected (a letter is drawn with far less)')
+    assert scores['Its accuracy'][0] == 0
 
 
 def test_a_drawing_that_never_ends():

@@ -7,13 +7,15 @@ import string
 
 import pytest
 
-from turtle_letters.reading.ink import MAX_POINTS, outline, thinned, turned
+from turtle_letters.reading.ink import LONGEST, MAX_POINTS, flooded, outline, thinned, turned
+from turtle_letters.reading.ocr import read_text
 from turtle_letters.reading.recognition import read
 from turtle_letters.reading.forms import READABLE
 from turtle_letters.reading.rows import apart, in_colours, read_row
 from turtle_letters.letters.font import FONT
 
-from support.cadet_paths import arc, driven, forward, placed, retraced, rounded, turn
+from support.cadet_paths import (arc, driven, forward, placed, retraced, rounded, turn,
+                                 wandering)
 from support.glyph_rows import cadets, row, touching
 
 SHAPES = [(3.0, 1.0, 5.5, 5.5), (0.5, 1.8, 1.0, 9.0), (2.0, 0.5, 8.0, 1.0)]
@@ -157,6 +159,27 @@ def test_whatever_the_ink_a_reading_compares_a_bounded_number_of_points():
     ink = flood()
     assert sum(map(len, thinned(ink, 0.01))) <= MAX_POINTS
     assert read_row(ink, 2)[0].letter is None
+
+
+@pytest.mark.parametrize('expected', ['M', 'MF', 'USI'])
+def test_a_flood_of_wandering_turtles_is_no_letter_nor_a_shape_of_one(expected):
+    """Thinned to MAX_POINTS, a flood's lines became chords across the
+    canvas, and cut as a row of MF the chords of its left part fit an M
+    within 5% of its height (and of USI, a U): a flood is no letter."""
+    ink = wandering()
+    assert flooded(ink, len(expected))
+    assert [(r.letter, r.best) for r in read_row(ink, expected)] == [(None, None)] * len(expected)
+    assert read_text(ink, expected).text == ''
+
+
+def test_a_letter_drawn_over_and_over_reads_until_it_is_a_flood():
+    """An L retraced there and back is 3.2 of its heights of ink a pass:
+    15 passes (47 heights) still read as an L, 16 (51) are a flood (LONGEST)."""
+    passes = [(1.0, 3.0), (1.0, 1.0), (2.2, 1.0), (1.0, 1.0)] * 16 + [(1.0, 3.0)]
+    fifteen, sixteen = [passes[:-5]], [passes]
+    assert LONGEST == 50 and not flooded(fifteen) and flooded(sixteen)
+    assert read_row(fifteen, 'L')[0].letter == 'L'
+    assert read_row(sixteen, 'L')[0].letter is None
 
 
 def test_thinning_a_dense_letter_keeps_its_reading_and_its_fit():
