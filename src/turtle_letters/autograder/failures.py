@@ -15,6 +15,10 @@ LOG_TAIL = 20000        # bytes read of a node's log file, from its end
 LOGS_READ = 40          # log files read at most
 LOG_DEPTH = 2           # folders under ~/.ros/log looked in
 LOG_ENTRIES = 1000      # entries of a folder looked at
+SAID_CHARS = 200        # characters of a line a node printed, shown at most
+# how the lines roslaunch prints of its own begin
+ROSLAUNCH_LINES = ('process[', '[', 'setting /', 'ROS_MASTER_URI', '...', 'started roslaunch',
+                   'auto-starting', 'SUMMARY', 'PARAMETERS', 'NODES', '* ', 'log file:')
 
 
 def why_not_launched(output, events, work):
@@ -110,7 +114,8 @@ def _tail(path):
 def first_death(output, work):
     """'NODE died: its last error line (where in the package)', for the
     first node roslaunch saw die (the line from its log, else from the
-    terminal before it died), or ''."""
+    terminal before it died); with no error line, the line printed just
+    before it died (last_said); or ''."""
     died = re.search(r'^\[(\S+?)(-\d+)?\] process has died', output, re.MULTILINE)
     if not died:
         return ''
@@ -119,7 +124,19 @@ def first_death(output, work):
         why = last_error(text)
         if why:
             return f'{node} died: {why}{in_package(text, work)}'
-    return f'{node} died'
+    said = last_said(output[:died.start()])
+    return f'{node} died' + (f' just after this line was printed: {said}' if said else '')
+
+
+def last_said(output):
+    """The last line of roslaunch's terminal `output`, unless roslaunch
+    printed it: a node that exits on its own often says why last (a real
+    package's talker wanting its arguments: 'Please enter position...')."""
+    lines = [line.strip() for line in output.splitlines() if line.strip()]
+    last = lines[-1] if lines else ''
+    if not last or last.startswith(ROSLAUNCH_LINES):
+        return ''
+    return last if len(last) <= SAID_CHARS else last[:SAID_CHARS] + '...'
 
 
 def in_package(text, work):

@@ -110,3 +110,16 @@ def test_a_death_says_where_in_the_package_its_error_was_raised(tmp_path):
     assert talker_failure(python2, work) == (
         "sagar_initial died: SyntaxError: Missing parentheses in call to 'print'. Did you mean "
         "print(...)? (VS/src/initials.py, line 20)")
+
+
+def test_a_death_with_no_error_line_says_the_line_printed_just_before_it(tmp_path):
+    """A real package's talker wants arguments, says so and exits 1: the
+    row quotes that line; a line roslaunch printed itself is no reason."""
+    asked = ('process[talker-1]: started with pid [21]\n'
+             'Please enter position [x, y, angle], letter and colour...\n'
+             '[talker-1] process has died [pid 21, exit code 1, cmd /w/talker.py].\n')
+    assert talker_failure(asked, str(tmp_path)) == (
+        'talker died just after this line was printed: Please enter position [x, y, angle], '
+        'letter and colour...')
+    silent = asked.replace('Please enter position [x, y, angle], letter and colour...\n', '')
+    assert talker_failure(silent, str(tmp_path)) == 'talker died'
