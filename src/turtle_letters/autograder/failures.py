@@ -52,11 +52,16 @@ def roslaunch_exception(output, work=''):
             below = [m.strip() for m in lines[i + 1:i + 4] if m.strip()]
             if not (said.endswith(':') and below):
                 return f'{RLEXCEPTION}{said}'
-            inside = os.path.join(work, 'ws', 'src', '') if work else None
+            inside = sources(work) if work else None
             words = [w.replace(inside, '') if inside else w for w in below[0].split()
                      if not w.startswith('__')]
             return f'{RLEXCEPTION}{said} {" ".join(words)}'
     return ''
+
+
+def sources(work):
+    """The sandbox's workspace sources, a path prefix: what follows is as the student knows it."""
+    return os.path.join(work, 'ws', 'src', '')
 
 
 def waits_for_calls(graph):
@@ -149,7 +154,7 @@ def in_package(text, work):
     if not errors:
         return ''
     start = errors[-2] + 1 if len(errors) > 1 else 0
-    inside = os.path.join(work, 'ws', 'src', '')
+    inside = sources(work)
     frames = [m.groups() for m in map(FRAME_LINE.match, lines[start:errors[-1]])
               if m and m.group(1).startswith(inside)]
     return f' ({frames[-1][0][len(inside):]}, line {frames[-1][1]})' if frames else ''
