@@ -26,7 +26,7 @@ from typing import NamedTuple
 
 import numpy
 
-from .ink import box, thinned
+from .ink import box, length, thinned
 from .rows import without_specks
 
 CORNER = 25.0       # degrees a line turns at one point, past which it may be a corner
@@ -49,9 +49,8 @@ def strays(ink) -> Strays:
     height = box(points)[3] if len(points) > 1 else 0.0
     if height <= 0:
         return Strays(0.0, 0.0)
-    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
     lines = [numpy.asarray(line, dtype=float)
-             for line in thinned(ink, max(height / 200, length / POINTS)) if len(line) > 1]
+             for line in thinned(ink, max(height / 200, length(ink) / POINTS)) if len(line) > 1]
     wobble = max((_stray(piece) for line in lines for part in _between_corners(line, height)
                   for piece in _pieces(part, height)), default=0.0)
     return Strays(wobble / height, max((_gap(line, height) for line in lines), default=0.0))

@@ -20,6 +20,11 @@ def box(points):
     return min(xs), min(ys), max(xs) - min(xs), max(ys) - min(ys)
 
 
+def length(lines):
+    """How long the polylines are, all together."""
+    return sum(math.dist(a, b) for line in lines for a, b in zip(line, line[1:]))
+
+
 def sampled(lines, step):
     """samples() as an array of (x, y): the same points, made by numpy for
     all the lines at once (a gothic row cut in two is a hundred short runs)."""
@@ -62,8 +67,7 @@ def thinned(ink, spacing):
     dropped (each line's ends kept), and at most MAX_POINTS in all: longer
     ink (a flood of turtles) is thinned more coarsely. A dropped point lies
     within the spacing of a kept one."""
-    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
-    spacing = max(spacing, length / MAX_POINTS)
+    spacing = max(spacing, length(ink) / MAX_POINTS)
     kept = []
     for line in ink:
         if not line:
@@ -90,8 +94,7 @@ def flooded(ink, letters=1):
     if len(points) < 2:
         return False
     _, _, w, h = box(points)
-    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
-    return length > LONGEST * letters * max(h, w / WIDEST)
+    return length(ink) > LONGEST * letters * max(h, w / WIDEST)
 
 
 def turned(lines, degrees, centre):
@@ -155,8 +158,7 @@ def outline(ink):
     contours = [line for line in ink if closed(line, h)]
     if not contours or h <= 0 or w > WIDEST * h:
         return None
-    length = sum(math.dist(a, b) for line in ink for a, b in zip(line, line[1:]))
-    if sum(math.dist(a, b) for line in contours for a, b in zip(line, line[1:])) < length / 2:
+    if length(contours) < length(ink) / 2:
         return None
     from PIL import Image, ImageChops, ImageDraw
     size = (int(w / h / CELL) + 3, int(1 / CELL) + 3)
