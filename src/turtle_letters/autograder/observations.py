@@ -47,6 +47,8 @@ class Drawing(NamedTuple):
     spawns: int = 0             # turtles spawned or killed, from the launch on
     looks: List[tuple] = []     # (r, g, b, width px) of each stroke, as turtlesim drew it
     background: tuple = BACKGROUND  # the canvas's colour after the last clear or reset
+    teleported: List[list] = []     # the ink teleports laid on the canvas left: never read
+    teleported_looks: List[tuple] = []  # ... the look of each of its lines
 
     @property
     def seconds(self):
@@ -168,23 +170,32 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None) ->
     wipes = [e for e in during if e['k'] in ('clear', 'reset')]
     kept = [e for e in during if not wipes or e['t'] > wipes[-1]['t']]   # on the canvas left
     background = tuple(wipes[-1].get('background', BACKGROUND)) if wipes else BACKGROUND
-    # a pen of the background's colour erases: it lays no ink, and breaks its line
-    driven = [(e['turtle'], s if s is not None and tuple(s[4:7]) != background else None)
-              for e in kept if e['k'] in MOVES
-              for s in (e['ink'] if e['k'] == 'move' else [None])]
+    driven = _inked(kept, 'move', background)
     jumps = [e for e in during if e['k'] == 'jump']
     turtles = list(dict.fromkeys(e['turtle'] for e in during if e['k'] in MOVES))
     commands = sum(e['n'] for e in record if e['k'] == 'cmd'
                    and first['t'] <= e['t'] <= stop + 2 * COUNTED)
     wiped = [(e['t'] - first['t'], e['k']) for e in wipes]
     lines, looks = strokes(driven)
+    teleported, teleported_looks = strokes(_inked(kept, 'jump', background))
     return Drawing(lines, first['t'], ended, commands, impostors(events),
                    sum(e.get('n', 1) for e in jumps),
                    sum(1 for e in kept if e['k'] == 'jump' and e['ink']),
                    [e for e in during if e['k'] in MOVES][-1]['t'],
                    wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
                    sum(1 for e in record[1:] if e['k'] == 'pen'),
-                   sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')), looks, background)
+                   sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')), looks, background,
+                   teleported, teleported_looks)
+
+
+def _inked(record, kind, background):
+    """(turtle, segment) of the ink the record's moves of `kind` ('move':
+    driven, 'jump': teleports) laid, a None where a move of the other kind
+    breaks a turtle's line. A pen of the `background`'s colour erases: it
+    lays no ink, and breaks its line."""
+    return [(e['turtle'], s if s is not None and tuple(s[4:7]) != background else None)
+            for e in record if e['k'] in MOVES
+            for s in (e['ink'] if e['k'] == kind else [None])]
 
 
 def roles(state, types, ours):

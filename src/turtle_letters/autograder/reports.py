@@ -127,12 +127,12 @@ def picture(out, student_id, facts):
     Painted in the student's own thread: Qt paints a QImage in any thread
     once its application is made in the main one (cli: ready_to_paint)."""
     d = facts.drawing
-    if d is None or not d.strokes:
+    if d is None or not (d.strokes or d.teleported):
         return None
     from ..grading.picture import draw_ink
     path = os.path.join(folder(out, student_id), 'drawing.png')
     draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, overlay(facts),
-             caption(student_id, facts))
+             caption(student_id, facts), (d.teleported, d.teleported_looks))
     return os.path.relpath(path, out)
 
 
@@ -153,11 +153,12 @@ def caption(student_id, facts):
     and what each half shows (a letter of the overlay named only, said so)."""
     ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
     named = ' (one OCR alone reads: named only)' if any(not s for _, s in overlay(facts)) else ''
+    jumped = facts.drawing is not None and facts.drawing.teleported
     return (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
             f'{drawn(facts.readings) or "no letter"}{ocr}\n'
             f'credited: {"".join(e for _, e in credited(facts)) or "none"}; left: the canvas as '
-            f'turtlesim showed it; right: the ink enlarged, each letter read dashed over '
-            f'it{named}')
+            f'turtlesim showed it{" (teleports laid ink too)" if jumped else ""}; right: the '
+            f'{"driven " if jumped else ""}ink enlarged, each letter read dashed over it{named}')
 
 
 def write_csv(path, rows):

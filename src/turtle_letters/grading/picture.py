@@ -159,13 +159,15 @@ def draw_canvas(path_png, drawings, tolerance=0.02):
 ZOOM_PX = 500       # px: the side of the ink's own box, beside the canvas
 
 
-def draw_ink(path_png, strokes, looks, background, letters, caption):
+def draw_ink(path_png, strokes, looks, background, letters, caption, teleported=((), ())):
     """A student's drawing as a TA sees it: on the left, the canvas as
-    turtlesim showed it (500 px, each stroke in its colour and width);
-    on the right, the ink's box enlarged, with each of `letters` (label,
-    strokes), the letters read, drawn thin and dashed over the ink and
-    named; `caption` (lines) above. Nothing expected is drawn: a guess's
-    shape laid over the ink misleads."""
+    turtlesim showed it (500 px, each stroke in its colour and width, and
+    the ink `teleported` laid, (strokes, looks)); on the right, the ink
+    read, its box enlarged (teleports' ink, never read, left out: with
+    none driven, an empty frame), with
+    each of `letters` (label, strokes), the letters read, drawn thin and
+    dashed over the ink and named; `caption` (lines) above. Nothing
+    expected is drawn: a guess's shape laid over the ink misleads."""
     application()
     lines = caption.split('\n')
     top = 16 * len(lines) + 10
@@ -184,26 +186,35 @@ def draw_ink(path_png, strokes, looks, background, letters, caption):
     canvas = (10, top, CANVAS_PIXELS / WORLD_SIZE, (0.0, 0.0), WORLD_SIZE)
     zoom = (CANVAS_PIXELS + 20, top, ZOOM_PX / side,
             (middle[0] - side / 2, middle[1] - side / 2), side)
-    for left, upper, scale, corner, size in (canvas, zoom):
-        def px(p, left=left, upper=upper, scale=scale, corner=corner, size=size):
-            return QPointF(left + (p[0] - corner[0]) * scale,
-                           upper + (size - (p[1] - corner[1])) * scale)
+    for view, shown in ((canvas, [teleported, (strokes, looks)]), (zoom, [(strokes, looks)])):
+        left, upper, scale, corner, size = view
         area = QRectF(left, upper, size * scale, size * scale)
         painter.setClipRect(area)
         painter.fillRect(area, QColor(*background))
-        widen = max(1.0, min(4.0, scale * WORLD_SIZE / CANVAS_PIXELS))
-        for stroke, look in zip(strokes, looks):
-            colour = QColor(*look[:3]) if len(look) >= 3 else QColor(*DEFAULT_PEN)
-            width = (look[3] if len(look) > 3 else DEFAULT_PEN_WIDTH) * widen
-            painter.setPen(QPen(colour, width, Qt.SolidLine, Qt.RoundCap, Qt.RoundJoin))
-            for a, b in zip(stroke, stroke[1:]):
-                painter.drawLine(px(a), px(b))
+        for lines, line_looks in shown:
+            _inked(painter, lines, line_looks, view)
         painter.setClipping(False)
         painter.setPen(QColor('black'))
         painter.drawRect(area)
     _letters_over(painter, letters, zoom)
     painter.end()
     image.save(path_png, 'PNG')
+
+
+def _inked(painter, strokes, looks, view):
+    """Each stroke in its look, (r, g, b, width px) or () for the default
+    pen, as turtlesim drew it on `view`, its width widened as it is enlarged."""
+    left, upper, scale, corner, size = view
+
+    def px(p):
+        return QPointF(left + (p[0] - corner[0]) * scale, upper + (size - (p[1] - corner[1])) * scale)
+    widen = max(1.0, min(4.0, scale * WORLD_SIZE / CANVAS_PIXELS))
+    for stroke, look in zip(strokes, looks):
+        colour = QColor(*look[:3]) if len(look) >= 3 else QColor(*DEFAULT_PEN)
+        width = (look[3] if len(look) > 3 else DEFAULT_PEN_WIDTH) * widen
+        painter.setPen(QPen(colour, width, Qt.SolidLine, Qt.RoundCap, Qt.RoundJoin))
+        for a, b in zip(stroke, stroke[1:]):
+            painter.drawLine(px(a), px(b))
 
 
 def _letters_over(painter, letters, view):

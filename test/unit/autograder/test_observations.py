@@ -54,6 +54,15 @@ def test_travel_with_the_pen_up_is_no_ink_and_ink_laid_by_a_teleport_is_apart():
     assert [(s[0][0], round(s[-1][0], 6)) for s in d.strokes] == [(1.0, 2.0), (3.0, 4.0),
                                                                  (4.0, 5.0)]
     assert d.jumps == 2 and d.jump_ink == 1
+    # the teleport's ink is kept apart, for the picture of the canvas: never read
+    assert d.teleported == [[(1.0, 5.0), (4.0, 5.0)]] and d.teleported_looks == [tuple(PEN)]
+
+
+def test_ink_teleports_laid_before_the_last_clear_is_not_on_the_canvas():
+    record = [jump(1.0, 1.0, 4.0, ink=True), dict(k='clear', t=1.5)] + line(2, 4.0, 5.0) + \
+        [jump(3.0, 5.0, 5.0, y=5.0, ink=False), jump(3.1, 5.0, 6.0, ink=True)]
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=10.0)
+    assert d.teleported == [[(5.0, 5.0), (6.0, 5.0)]]
 
 
 def test_every_turtles_ink_counts_each_in_lines_of_its_own():

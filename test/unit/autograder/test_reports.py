@@ -92,3 +92,17 @@ def test_the_caption_names_no_letter_only_where_ocr_credits_none():
     assert facts.ocr is not None and reports.overlay(facts) == []
     said = reports.caption('hanie', facts)
     assert 'credited: none' in said and 'named only' not in said
+
+
+def test_the_caption_says_teleports_laid_ink_shown_on_the_canvas_only():
+    """A class's M laid by pen-down teleports, the dot of its i driven: the
+    canvas shows the M as turtlesim did, and the caption says why the ink
+    enlarged, the driven ink read, lacks it."""
+    dot = [[(4.08, 2.5), (4.0, 2.58), (3.92, 2.5), (4.0, 2.42), (4.08, 2.5)]]
+    m = [[(1.0, 1.0), (1.0, 3.0), (2.0, 1.0), (3.0, 3.0), (3.0, 1.0)]]
+    jumped = Drawing(dot, 1.0, 9.0, 9, [], 5, 5, teleported=m, teleported_looks=[()])
+    said = reports.caption('mi', Facts('MI', drawing=jumped, readings=read_row(dot, 'MI')))
+    plain = reports.caption('mi', Facts('MI', drawing=jumped._replace(teleported=[]),
+                                        readings=read_row(dot, 'MI')))
+    assert 'turtlesim showed it (teleports laid ink too)' in said and 'the driven ink' in said
+    assert 'teleports' not in plain and 'driven' not in plain

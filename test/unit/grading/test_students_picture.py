@@ -1,6 +1,7 @@
 """The class grader's picture of a student's drawing: the ink as turtlesim
 drew it, every turtle's in its own colour and width, on the canvas's own
 colour, and only the letters read drawn over it. Read back pixel by pixel."""
+import math
 import os
 import threading
 
@@ -34,6 +35,23 @@ def test_each_turtles_ink_in_its_colour_and_width_on_the_canvas_colour(tmp_path)
     assert colour_at(image, canvas(4.0, 3.5)[0] + 3, canvas(4.0, 3.5)[1]) == WHITE
     assert colour_at(image, canvas(2.0, 3.5)[0] + 3, canvas(2.0, 3.5)[1]) == BACKGROUND
     assert image.width() >= CANVAS_PIXELS + ZOOM_PX
+
+
+def test_ink_teleports_laid_is_on_the_canvas_as_turtlesim_showed_it_not_in_the_ink_read(tmp_path):
+    """A class's M laid by pen-down teleports, the dot of its i driven: the
+    canvas on the left shows the M, as turtlesim did; the enlarged ink on
+    the right is the dot read, without the M."""
+    m = [[(1.0, 1.0), (1.0, 3.0), (2.0, 1.0), (3.0, 3.0), (3.0, 1.0)]]
+    dot = [[(4.0 + 0.08 * math.cos(a / 8), 2.5 + 0.08 * math.sin(a / 8)) for a in range(51)]]
+    path = str(tmp_path / 'mi.png')
+    draw_ink(path, dot, [(*WHITE, 2)], BACKGROUND, [], 'teleports', (m, [(*GREEN, 2)]))
+    image = QImage(path)
+    top = image.height() - CANVAS_PIXELS - 10
+    stem = 10 + 1.0 * PIXELS_PER_METRE, top + CANVAS_PIXELS - 2.0 * PIXELS_PER_METRE
+    assert colour_at(image, *stem) == GREEN
+    zoomed = [colour_at(image, x, y) for x in range(CANVAS_PIXELS + 25, image.width() - 5, 2)
+              for y in range(top + 5, image.height() - 15, 2)]
+    assert WHITE in zoomed and GREEN not in zoomed
 
 
 def test_only_the_letters_given_are_drawn_over_the_ink(tmp_path):
