@@ -129,3 +129,28 @@ def test_the_class_files_keep_roster_order_when_a_later_student_finished_first()
     assert [r.id for r in rows] == ['a1', 'b2', 'c3']
     assert rows[1].grade.reason == 'grading was stopped (SIGINT) before this student was graded'
     assert rows[2] is done[1]
+
+
+def test_the_graders_thread_keeps_to_its_students_core_while_it_grades_them():
+    """Each student's grading thread (the reading, seconds of a core, and
+    Tesseract's) is held to its slot's core, the one the student's world
+    and nodes are pinned to: it never takes the core of the student graded
+    beside, whose timed drawing runs meanwhile. The thread's cores are its
+    own again after; the main thread's are never changed."""
+    place = cli.Place([], isolated=False, jobs=2, caps=None)
+    cores, seen = os.sched_getaffinity(0), {}
+    both_in = threading.Barrier(2)
+
+    def grading(name):
+        with place.sandbox() as box:
+            both_in.wait(timeout=10)
+            seen[name] = (set(box.cpus), os.sched_getaffinity(0))
+        seen[name + ' after'] = os.sched_getaffinity(0)
+    threads = [threading.Thread(target=grading, args=(name,)) for name in 'ab']
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert seen['a'][0] == seen['a'][1] and seen['b'][0] == seen['b'][1]
+    assert seen['a'][1] != seen['b'][1] or len(cores) == 1
+    assert seen['a after'] == seen['b after'] == cores == os.sched_getaffinity(0)
