@@ -163,11 +163,11 @@ def draw_ink(path_png, strokes, looks, background, letters, caption, teleported=
     """A student's drawing as a TA sees it: on the left, the canvas as
     turtlesim showed it (500 px, each stroke in its colour and width, and
     the ink `teleported` laid, (strokes, looks)); on the right, the ink
-    read, its box enlarged (teleports' ink, never read, left out: with
-    none driven, an empty frame), with
-    each of `letters` (label, strokes), the letters read, drawn thin and
-    dashed over the ink and named; `caption` (lines) above. Nothing
-    expected is drawn: a guess's shape laid over the ink misleads."""
+    read, its box enlarged (the teleports' ink, never read, left out:
+    with none driven, an empty frame), with each of `letters` (label,
+    strokes), the letters read, drawn thin and dashed over the ink and
+    named; `caption` (lines) above. Nothing expected is drawn: a guess's
+    shape laid over the ink misleads."""
     application()
     lines = caption.split('\n')
     top = 16 * len(lines) + 10
@@ -186,13 +186,13 @@ def draw_ink(path_png, strokes, looks, background, letters, caption, teleported=
     canvas = (10, top, CANVAS_PIXELS / WORLD_SIZE, (0.0, 0.0), WORLD_SIZE)
     zoom = (CANVAS_PIXELS + 20, top, ZOOM_PX / side,
             (middle[0] - side / 2, middle[1] - side / 2), side)
-    for view, shown in ((canvas, [teleported, (strokes, looks)]), (zoom, [(strokes, looks)])):
+    for view, inks in ((canvas, [teleported, (strokes, looks)]), (zoom, [(strokes, looks)])):
         left, upper, scale, corner, size = view
         area = QRectF(left, upper, size * scale, size * scale)
         painter.setClipRect(area)
         painter.fillRect(area, QColor(*background))
-        for lines, line_looks in shown:
-            _inked(painter, lines, line_looks, view)
+        for ink, ink_looks in inks:
+            _inked(painter, ink, ink_looks, view)
         painter.setClipping(False)
         painter.setPen(QColor('black'))
         painter.drawRect(area)
@@ -201,14 +201,22 @@ def draw_ink(path_png, strokes, looks, background, letters, caption, teleported=
     image.save(path_png, 'PNG')
 
 
-def _inked(painter, strokes, looks, view):
-    """Each stroke in its look, (r, g, b, width px) or () for the default
-    pen, as turtlesim drew it on `view`, its width widened as it is enlarged."""
+def _on(view):
+    """The pixel a point of the world (m) is at in `view`, (left, upper,
+    scale, corner, size): y up in the world, down on the image."""
     left, upper, scale, corner, size = view
 
     def px(p):
-        return QPointF(left + (p[0] - corner[0]) * scale, upper + (size - (p[1] - corner[1])) * scale)
-    widen = max(1.0, min(4.0, scale * WORLD_SIZE / CANVAS_PIXELS))
+        return QPointF(left + (p[0] - corner[0]) * scale,
+                       upper + (size - (p[1] - corner[1])) * scale)
+    return px
+
+
+def _inked(painter, strokes, looks, view):
+    """Each stroke in its look, (r, g, b, width px) or () for the default
+    pen, as turtlesim drew it on `view`, its width widened as it is enlarged."""
+    px = _on(view)
+    widen = max(1.0, min(4.0, view[2] * WORLD_SIZE / CANVAS_PIXELS))
     for stroke, look in zip(strokes, looks):
         colour = QColor(*look[:3]) if len(look) >= 3 else QColor(*DEFAULT_PEN)
         width = (look[3] if len(look) > 3 else DEFAULT_PEN_WIDTH) * widen
@@ -222,9 +230,7 @@ def _letters_over(painter, letters, view):
     shows on any ink, named at its top left; a label without strokes (a
     letter OCR reads that no form fits) in the view's top left, in turn."""
     left, upper, scale, corner, size = view
-
-    def px(p):
-        return QPointF(left + (p[0] - corner[0]) * scale, upper + (size - (p[1] - corner[1])) * scale)
+    px = _on(view)
     painter.setClipRect(QRectF(left, upper, size * scale, size * scale))
     for k, (label, strokes) in enumerate(letters):
         for pen in (QPen(QColor('black'), 3), QPen(QColor('white'), 1.5, Qt.DashLine)):
