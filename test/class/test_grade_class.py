@@ -108,9 +108,12 @@ def test_each_criterion_says_what_happened(graded):
 def test_the_files_handed_back(graded):
     _, out, _ = graded
     page = open(os.path.join(out, 'report.html')).read()
-    for student, (_, drawn, _, _) in CONCLUSIONS.items():
+    # a picture of each canvas with ink on it: Tariq's T, laid by teleports, is shown, never read
+    inked = {student for student, (_, drawn, _, _) in CONCLUSIONS.items() if drawn} | {'c08_tariq'}
+    for student in CONCLUSIONS:
         assert f'id="{student}"' in page
-        assert os.path.exists(os.path.join(out, student, 'drawing.png')) == bool(drawn), student
+        assert os.path.exists(os.path.join(out, student, 'drawing.png')) == (student in inked), \
+            student
     log = open(os.path.join(out, 'c01_nadia', 'log.txt')).read()
     assert 'catkin_make' in log and "NameError: name 'raw_input' is not defined" in log
     # Kenji's heading.py imports what a course's machine has (numpy, tf, matplotlib), and runs
