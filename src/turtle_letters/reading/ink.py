@@ -13,6 +13,7 @@ AS_BOX = 0.97       # share of its box a closed line fills: a box (a D with cut 
 CLOSED = 0.03       # share of the height within which a line's ends meet: a contour
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 LONGEST = 50        # heights of ink a letter is drawn with, at most: more is a flood (flooded)
+STRAIGHT = 0.03     # share of its length within which ink lies along one line: a bare stroke
 
 
 def box(points):
@@ -95,6 +96,30 @@ def flooded(ink, letters=1):
         return False
     _, _, w, h = box(points)
     return length(ink) > LONGEST * letters * max(h, w / WIDEST)
+
+
+def dash(ink, letters=1):
+    """Whether `ink` is a dash or less, no row of `letters`: no height, or
+    more than WIDEST times as wide as high for each letter. (A turtle
+    driven straight from its start, heading 0, lays a line of no height
+    at all; after a turn, a millionth of a metre. Read as a row, such a
+    line was sampled a share of its height apart: no end to the cost.)"""
+    points = [p for line in ink for p in line]
+    if not points:
+        return True
+    _, _, w, h = box(points)
+    return h <= 0 or w > WIDEST * letters * h
+
+
+def straight(ink):
+    """Whether all of `ink` lies within STRAIGHT of its length of one line
+    (its principal axis), whatever its slope: a bare stroke."""
+    points = numpy.array([p for line in ink for p in line], dtype=float).reshape(-1, 2)
+    if len(points) < 2:
+        return True
+    centred = points - points.mean(axis=0)
+    axes = numpy.linalg.svd(centred, full_matrices=False)[2]
+    return numpy.ptp(centred @ axes[1]) <= STRAIGHT * numpy.ptp(centred @ axes[0])
 
 
 def turned(lines, degrees, centre):

@@ -18,7 +18,7 @@ import string
 import threading
 from typing import NamedTuple
 
-from .ink import box, closed, flooded, squarest_turn, thinned, turned
+from .ink import box, closed, dash, flooded, squarest_turn, thinned, turned
 from .forms import CLEAN
 from .recognition import TWINS, Reading, twin_farther
 from .rows import letters_of, levels, read_blind, without_specks
@@ -121,7 +121,8 @@ def read_text(ink, expected='') -> OcrReading:
     as it lies. A row read as expected carries the strokes' objection, if
     they see another letter plainly in a place (_objected)."""
     points = [p for line in ink for p in line]
-    if len(points) < 2 or box(points)[3] <= 0 or flooded(ink, max(1, len(expected))):
+    if len(points) < 2 or dash(ink, max(1, len(expected))) or \
+            flooded(ink, max(1, len(expected))):
         return OcrReading('', 0.0)     # a flood (ink.flooded): thinned, chords; whole, a blot
     rows = levels(without_specks(ink), len(expected)) if len(expected) > 1 else []
     if rows and _plainly_other(rows, expected):

@@ -25,7 +25,8 @@ from scipy.ndimage import distance_transform_edt
 from scipy.spatial.distance import directed_hausdorff
 
 from .forms import CLEAN, READABLE, Point, grid_rows, templates
-from .ink import CELL, WIDEST, box, boxed, closed, outline, sampled, thinned, turned
+from .ink import (CELL, WIDEST, box, boxed, closed, outline, sampled, straight, thinned,
+                  turned)
 
 LEVEL = 0.03        # a fit this good level is not tried tilted
 TILTS = (-45, -35, -25, -15, -10, -5, 5, 10, 15, 25, 35, 45)    # degrees a letter is tried off level
@@ -262,12 +263,15 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     better than theirs (_fits): read it alone for its own (rows.Row.reading
     does, for the letter expected). With `refined` 1, letters that cannot
     fit best are left out: a row's cuts ask only how well a part fits. A
-    box DOUBTFUL_BOX wide for its height (ink.boxed) reads as no letter."""
+    box DOUBTFUL_BOX wide for its height (ink.boxed) reads as no letter, and
+    a bare stroke (ink.straight) as an I or none: a line sloped 27 degrees
+    fit a J tilted 52 within 8% of its height, its hook no more than that."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
     reading = _read_either(ink, letters, tilts, finer, refined)
-    if reading.letter is not None and DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1]:
+    if reading.letter not in (None, 'I') and straight(ink) or \
+            reading.letter is not None and DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1]:
         return Reading(None, reading.best, reading.fits)
     return reading
 

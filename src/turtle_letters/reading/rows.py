@@ -22,7 +22,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
-from .ink import box, closed, flooded, inside, outline, samples, turned
+from .ink import box, closed, dash, flooded, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
 from .recognition import MOST_TILT, SAMPLE, TILTS, Reading, read
 
@@ -289,7 +289,8 @@ def levels(ink, count=2):
     the other reads more letters of any kind, `count` of them (_seen):
     which way is up is not decided by the letters hoped for. Where both
     read as many, and some, and both lie FAR_OFF level or more, which is
-    up is in doubt: the row is read level only. (A cadet's square O and G
+    up is in doubt: the row is read level only; and a turn that leaves it a
+    dash (ink.dash) is none: it is a line, sloped. (A cadet's square O and G
     touching, sloped 43 degrees, read one letter either way, and stood on
     its end, the lower way, it is an E. A level QI lies as low at -50 and
     50, and reads level.)"""
@@ -307,7 +308,8 @@ def levels(ink, count=2):
         seen_rival = _seen(level(rival[0]), count) if seen < count or far_off else 0
         doubted = seen_rival == seen > 0 and far_off
         slope = 0 if doubted else rival[0] if seen_rival > seen else slope
-    return [(tilt, centre, level(tilt)) for tilt in ([slope] if slope else []) + [0]]
+    ways = [(tilt, centre, level(tilt)) for tilt in ([slope] if slope else []) + [0]]
+    return [way for way in ways if not way[0] or not dash(way[2], count)]   # a line sloped
 
 
 def row_slopes(ink):
@@ -332,6 +334,8 @@ def row_slopes(ink):
 
 def _seen(ink, count):
     """How many letters of any kind `ink`, as it lies, reads as a row of `count`."""
+    if dash(ink, count):
+        return 0
     return sum(reading.letter is not None for reading in _blind(row_of(ink), count))
 
 
@@ -380,10 +384,11 @@ def read_row(ink, expected='') -> List[Reading]:
     part of it (without_specks), and a letter of a row well under its
     height reads only as Row.reading says (a small o after a J does; a
     quarter of an S's curve beside a whole U is no I). A flood of ink
-    (ink.flooded) is no letter, nor a shape of one."""
+    (ink.flooded) is no letter, nor a shape of one, and nor is a dash
+    (ink.dash: a line driven level)."""
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
-    if flooded(ink, max(1, count)):
+    if flooded(ink, max(1, count)) or dash(ink, max(1, count)):
         return [Reading(None, None, {}) for _ in range(max(1, count))]
     if count <= 1:
         return [Row(ink).reading(ink, exact=expected if isinstance(expected, str) else '')]
@@ -501,7 +506,10 @@ def read_blind(ink, count):
     """The row of `count` letters as a TA reads it not knowing the roster,
     at its likelier level (levels; cut level as well, a row of NB tilted
     25 degrees has a sliver of its N that is an I)."""
-    return _blind(row_of(levels(without_specks(ink), count)[0][2]), count)
+    ink = without_specks(ink)
+    if dash(ink, count):
+        return [Reading(None, None, {}) for _ in range(count)]
+    return _blind(row_of(levels(ink, count)[0][2]), count)
 
 
 def _hoped(row, letters, expected):

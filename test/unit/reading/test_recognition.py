@@ -114,6 +114,28 @@ def test_paths_that_are_no_letter(path):
     assert reading.best is None or reading.best.fit > reading.best.readable
 
 
+@pytest.mark.parametrize('slope', range(0, 180, 10))
+def test_a_straight_line_at_any_slope_is_an_i_or_no_letter(slope):
+    a = math.radians(slope)
+    line = [(5 + 2 * math.cos(a) * t, 5 + 2 * math.sin(a) * t) for t in (-1, -0.3, 0.4, 1)]
+    assert read([line]).letter in (None, 'I'), slope
+
+
+@pytest.mark.parametrize('expected', ['S', 'SN', 'SNB'])
+@pytest.mark.parametrize('path', [
+    [(1, 1), (3, 1)], [(5.544, 5.544), (0.0, 5.544)], [(1, 1), (5, 1 + 1e-6)],
+    [(1, 1), (5, 1 + 1e-3)], [(1, 1), (5, 3)], [(2, 2), (2, 2)],
+], ids=['flat line', 'to the wall', 'a millionth off level', 'a thousandth off level',
+        'sloped', 'still'])
+def test_a_line_or_no_move_read_as_the_letters_expected_is_no_letter(path, expected):
+    """A turtle driven straight ahead from its start, heading 0, lays a line
+    of no height at all (a real class's script drove its turtle into the
+    wall so): the grader read it as a row and divided by its height. A
+    millionth of a metre off level, it sampled the line without end."""
+    assert not any(r.letter for r in read_row([path], expected))
+    assert read_text([path], expected).text != expected
+
+
 def test_a_row_of_letters_is_read_left_to_right_by_the_space_between_them():
     j = [(1.6, 3.0), (1.6, 1.0), (1.0, 1.0), (1.0, 1.6)]
     d = [(2.0, 1.0), (2.0, 3.0), (2.5, 3.0), (2.9, 2.6), (2.9, 1.4), (2.5, 1.0), (2.0, 1.0)]
