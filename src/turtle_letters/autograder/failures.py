@@ -8,7 +8,8 @@ import re
 from ..isolation.files import read_plain
 from . import observations as seen
 
-ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*)$')
+# a Python exception's line, roslaunch's, or env's where a #! names a program the machine lacks
+ERROR_LINE = re.compile(r'^\s*(\w+(Error|Exception)\b.*|ERROR: .*|/usr/bin/env: .+)$')
 FRAME_LINE = re.compile(r'^\s*File "([^"]+)", line (\d+)')    # a Python traceback's
 RLEXCEPTION = 'roslaunch: '    # how a reason roslaunch_exception gives begins
 LOG_TAIL = 20000        # bytes read of a node's log file, from its end

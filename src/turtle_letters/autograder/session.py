@@ -22,7 +22,8 @@ from .processes import ControllerCpu, Reader, RunningScripts
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
                          python_scripts, scripts, started_packages, wrap)
-from .world import Lab, course_environment, stand_in, stand_in_started, terminal_stand_ins
+from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
+                    terminal_stand_ins)
 
 POLL = 0.1                  # s between looks at what the watcher saw
 BASH = ' launch-prefix="bash"'  # a shell script without #! is run with bash, as a TA types it
@@ -54,6 +55,7 @@ class Run:
         self.generated = ''     # the executables the grader started, for want of a launch file
         self.executables = []   # ... each by name
         self.passed_over = None  # why the package's launch file was not run, if it was not
+        self.fell_short = ''    # '; why': the lab of the executables the grader started fell short
         self.log = []           # (title, lines)
         self.finished = None    # t the run stopped watching
         self.limit_s = None     # s the drawing was watched for at most (limits.drawing)
@@ -83,16 +85,16 @@ def _env(work, master_uri, isolated=True):
 
 def prepare(package, work):
     """The work folder: the package's copy in a workspace, a home, a folder
-    for temporary files, `python` for scripts that say
-    `#!/usr/bin/env python` (Noetic's is python3) and the terminals a
-    launch-prefix may open (world.TERMINALS). The scripts handed in
+    for temporary files, the names Noetic's python3 goes by
+    (world.INTERPRETERS) and the terminals a launch-prefix may open
+    (world.TERMINALS). The scripts handed in
     without the execute bit, made executable (a TA's fallback)."""
     for folder in ('ws/src', 'home', 'tmp', 'bin'):
         os.makedirs(os.path.join(work, folder), exist_ok=True)
     copied = copy(package, os.path.join(work, 'ws'))
     if package.loose:
         wrap(copied)
-    os.symlink('/usr/bin/python3', os.path.join(work, 'bin', 'python'))
+    interpreter_stand_ins(os.path.join(work, 'bin'))
     terminal_stand_ins(os.path.join(work, 'bin'))
     return made_executable(copied)
 
@@ -185,7 +187,7 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
         result.build, result.log = first.build, first.log
         _launch_and_watch(box, limits, result)
         result.launch = Step(False, f'{refused}; the grader ran its executables instead '
-                                    f'({result.generated}), as a TA would')
+                                    f'({result.generated}), as a TA would{result.fell_short}')
     elif made and result.launch is not None and result.launch.ok:
         result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
                                     f'the grader made {"them" if len(made) > 1 else "it"} '
@@ -230,7 +232,7 @@ def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
     if result.launch is not None:
         result.launch = Step(False, f'no launch file: the grader started its executables '
                                     f'({first.generated}) together, then {name} alone in a '
-                                    f'fresh world, as a TA would')
+                                    f'fresh world, as a TA would{result.fell_short}')
     return result
 
 
@@ -318,12 +320,21 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
         if watcher_said.strip():
             result.log.append(("the grader's watcher (not the submission's)", watcher_said))
     _explain(result, lab.terminal, work)
-    if result.passed_over and result.launch is not None:
-        result.launch = Step(False, f'{result.passed_over}: the grader started its executables '
-                                    f'({result.generated}) instead, as a TA would')
-    elif result.generated and result.launch is not None:
-        result.launch = Step(False, f'no launch file: the grader started its executables '
-                                    f'({result.generated}) as a launch file would')
+    if result.generated and result.launch is not None:
+        result.fell_short, result.launch = started_instead(result)
+
+
+def started_instead(run):
+    """('; why the lab fell short' or '', the launch step) of a `run` of the
+    executables the grader started for want of a launch file that starts
+    them: how it came to, and what the lab said where it fell short (a node
+    that died is the student's to mend, whoever started it)."""
+    fell_short = '' if run.launch.ok else f'; {run.launch.says}'
+    how = (f'{run.passed_over}: the grader started its executables ({run.generated}) instead, '
+           f'as a TA would' if run.passed_over else
+           f'no launch file: the grader started its executables ({run.generated}) as a launch '
+           f'file would')
+    return fell_short, Step(False, how + fell_short)
 
 
 class Refused:

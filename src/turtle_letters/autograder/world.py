@@ -89,6 +89,20 @@ def terminal_stand_ins(folder):
         os.chmod(path, 0o755)
 
 
+# The names a course's Noetic machine (Ubuntu 20.04, Python 3.8) runs ROS's
+# python3 by and this one may lack: `python`, as a TA runs a script that says
+# `#!/usr/bin/env python` (Noetic's is python3), and `python3.8` (a real
+# class's `#!/usr/bin/env python3.8`, which Debian 12 cannot start).
+INTERPRETERS = ('python', 'python3.8')
+
+
+def interpreter_stand_ins(folder):
+    """/usr/bin/python3 in `folder` (first on the submission's PATH), by each name of
+    INTERPRETERS."""
+    for name in INTERPRETERS:
+        os.symlink('/usr/bin/python3', os.path.join(folder, name))
+
+
 # What a course's ROS Noetic desktop machine offers a student's package that
 # this machine may lay out otherwise. On /opt/ros/noetic every package's
 # headers share one folder, roscpp's: a C++ package that includes

@@ -1,6 +1,6 @@
 """What a course's Noetic machine offers, offered here: turtlesim's headers
 found where roscpp's are, whichever workspace built them; the windows
-a launch-prefix opens. No ROS here."""
+a launch-prefix opens; python3 by Noetic's names for it. No ROS here."""
 import os
 import subprocess
 
@@ -49,3 +49,16 @@ def test_a_window_a_launch_prefix_opens_runs_its_command_in_the_same_terminal(tm
     assert ran('gnome-terminal', f'--command={line}', node=[])[:2] == (0, "['__name:=talker'] P")
     code, _, said = ran('xterm', node=[])
     assert code != 0 and 'no command after -e, -x, -- or --command' in said
+
+
+def test_a_script_that_names_noetics_python_by_its_version_runs(tmp_path):
+    """A real class's `#!/usr/bin/env python3.8`: Noetic's python3 on Ubuntu
+    20.04; Debian 12 has no python3.8."""
+    machine.interpreter_stand_ins(str(tmp_path))
+    for name in machine.INTERPRETERS:
+        script = tmp_path / f'{name}_script'
+        script.write_text(f'#!/usr/bin/env {name}\nimport sys\nprint(sys.version_info[0])\n')
+        script.chmod(0o755)
+        done = subprocess.run([str(script)], capture_output=True, text=True, timeout=30,
+                              env={'PATH': f'{tmp_path}:/usr/bin:/bin'})
+        assert (done.returncode, done.stdout) == (0, '3\n'), (name, done.stderr)

@@ -123,3 +123,13 @@ def test_a_death_with_no_error_line_says_the_line_printed_just_before_it(tmp_pat
         'letter and colour...')
     silent = asked.replace('Please enter position [x, y, angle], letter and colour...\n', '')
     assert talker_failure(silent, str(tmp_path)) == 'talker died'
+
+
+def test_a_script_whose_bang_names_a_program_the_machine_lacks_says_so(tmp_path):
+    """`#!/usr/bin/env python2`: env's own line, printed before roslaunch
+    says the process started, is why it died."""
+    output = ('/usr/bin/env: \u2018python2\u2019: No such file or directory\n'
+              'process[s0-1]: started with pid [21]\n'
+              '[s0-1] process has died [pid 21, exit code 127, cmd /w/s.py].\n')
+    assert talker_failure(output, str(tmp_path)) == \
+        's0 died: /usr/bin/env: \u2018python2\u2019: No such file or directory'

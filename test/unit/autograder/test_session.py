@@ -10,7 +10,8 @@ import pytest
 
 from turtle_letters.autograder import world
 from turtle_letters.autograder.processes import Capped
-from turtle_letters.autograder.session import (Refused, drivers_first, executables,
+from turtle_letters.autograder.session import (Refused, Run, Step, drivers_first,
+                                                executables, started_instead,
                                                first_error, generated_launch, prepare)
 from turtle_letters.autograder.submission import find
 from turtle_letters.autograder.world import Lab
@@ -167,3 +168,27 @@ def test_executables_that_drove_together_are_tried_alone_first():
     assert drivers_first(run) == ['n_controller.py', 'spin_forever.py', 'keyboard.py']
     run.record = [dict(k='by', t=1.0, node='/keyboard1')]   # a name that is not its place
     assert drivers_first(run) == run.executables
+
+
+def test_a_node_the_grader_started_that_died_says_why_beside_how_it_was_started():
+    """A real class's script with no launch file, its `if __name__` inside its
+    class: started by the grader, it died of a NameError, and the row said
+    only that the grader had started it."""
+    run = Run(None)
+    run.generated, run.launch = 'cls.py', Step(False, "cls0 died: NameError: name 'Turtle' "
+                                                      "is not defined (p/scripts/cls.py, line 9)")
+    fell_short, step = started_instead(run)
+    assert step == Step(False, 'no launch file: the grader started its executables (cls.py) as '
+                               "a launch file would; cls0 died: NameError: name 'Turtle' is not "
+                               'defined (p/scripts/cls.py, line 9)')
+    assert fell_short == "; cls0 died: NameError: name 'Turtle' is not defined " \
+                         '(p/scripts/cls.py, line 9)'
+    run.passed_over = 'launch/a.launch starts nodes of turtlesim only, none of p'
+    assert started_instead(run)[1].says.startswith(
+        'launch/a.launch starts nodes of turtlesim only, none of p: the grader started its '
+        "executables (cls.py) instead, as a TA would; cls0 died: NameError")
+    run.launch = Step(True, 'turtlesim up, /c listening on /chatter, in 2.0 s')
+    assert started_instead(run) == ('', Step(False, 'launch/a.launch starts nodes of turtlesim '
+                                                    'only, none of p: the grader started its '
+                                                    'executables (cls.py) instead, as a TA '
+                                                    'would'))
