@@ -28,6 +28,7 @@ from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, st
 POLL = 0.1                  # s between looks at what the watcher saw
 BASH = ' launch-prefix="bash"'  # a shell script without #! is run with bash, as a TA types it
 REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch file it cannot start
+NO_TURTLESIM = 'its launch file does not start turtlesim'   # nor does the grader's, by design
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
                  'ROS_ETC_DIR', 'ROS_ROOT', 'ROSLISP_PACKAGE_DIRECTORIES')
@@ -327,9 +328,11 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
 def started_instead(run):
     """('; why the lab fell short' or '', the launch step) of a `run` of the
     executables the grader started for want of a launch file that starts
-    them: how it came to, and what the lab said where it fell short (a node
-    that died is the student's to mend, whoever started it)."""
-    fell_short = '' if run.launch.ok else f'; {run.launch.says}'
+    them: how it came to, and what the lab said where it did not come up (a
+    node that died is the student's to mend, whoever started it). The
+    launch file the grader writes starts no turtlesim: the grader runs its own."""
+    fell_short = '' if run.launch.ok or run.launch.says == NO_TURTLESIM else \
+        f'; {run.launch.says}'
     how = (f'{run.passed_over}: the grader started its executables ({run.generated}) instead, '
            f'as a TA would' if run.passed_over else
            f'no launch file: the grader started its executables ({run.generated}) as a launch '
@@ -420,7 +423,7 @@ def _launched(events, stand_in_folder, seconds):
     stand-in) and a node that listens on /chatter."""
     listeners = seen.last_graph(events)['chatter_subscribers'] if seen.last_graph(events) else []
     if not stand_in_started(stand_in_folder):
-        return Step(False, 'its launch file does not start turtlesim', seconds)
+        return Step(False, NO_TURTLESIM, seconds)
     if not listeners:
         return Step(False, 'no node subscribed to /chatter: a turtle moved without the trigger',
                     seconds)

@@ -10,8 +10,8 @@ import pytest
 
 from turtle_letters.autograder import world
 from turtle_letters.autograder.processes import Capped
-from turtle_letters.autograder.session import (Refused, Run, Step, drivers_first,
-                                                executables, started_instead,
+from turtle_letters.autograder.session import (NO_TURTLESIM, Refused, Run, Step,
+                                                drivers_first, executables, started_instead,
                                                first_error, generated_launch, prepare)
 from turtle_letters.autograder.submission import find
 from turtle_letters.autograder.world import Lab
@@ -187,6 +187,8 @@ def test_a_node_the_grader_started_that_died_says_why_beside_how_it_was_started(
     assert started_instead(run)[1].says.startswith(
         'launch/a.launch starts nodes of turtlesim only, none of p: the grader started its '
         "executables (cls.py) instead, as a TA would; cls0 died: NameError")
+    run.launch = Step(False, NO_TURTLESIM, 2.0)    # the lab came up
+    assert started_instead(run)[0] == ''
     run.launch = Step(True, 'turtlesim up, /c listening on /chatter, in 2.0 s')
     assert started_instead(run) == ('', Step(False, 'launch/a.launch starts nodes of turtlesim '
                                                     'only, none of p: the grader started its '
