@@ -7,7 +7,7 @@ import yaml
 
 from ..isolation.files import shown
 from ..reading.cleanness import strays
-from ..reading.ink import LONGEST, flooded
+from ..reading.ink import LONGEST, box, flooded
 from ..reading.ocr import OcrReading, said as ocr_said, supports
 from ..reading.recognition import Reading
 from .observations import Drawing, chatter_peak, own_triggers
@@ -275,6 +275,10 @@ def _letter_read(facts, _):
     if not read and facts.drawing and flooded(facts.drawing.strokes, len(facts.expected) or 1):
         return 0.0, (f'no letter is read from a flood of ink: more than {LONGEST} times its '
                      f'height for each letter expected (a letter is drawn with far less)')
+    if not read and facts.drawing and facts.drawing.strokes:     # ink of no shape (ink.dash)
+        _, _, w, h = box(facts.drawing.points)
+        return 0.0, (f'no letter reads from the ink: a dash, {w:.2f} m across and {h:.2f} m '
+                     f'high (a turtle driven straight, no letter drawn)')
     if not read:
         teleported = facts.drawing.jump_ink if facts.drawing else 0
         return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '

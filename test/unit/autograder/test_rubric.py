@@ -217,6 +217,17 @@ def test_a_flood_of_turtles_is_said_to_be_one_not_nothing_drawn():
     assert scores['Its accuracy'][0] == 0
 
 
+def test_a_dash_alone_is_said_to_be_one_not_nothing_drawn():
+    """A real class's script drove its turtle 1.8 m straight from its start
+    and died: the row said 'nothing was drawn' beside its picture of a line."""
+    scores = scores_of(grade(facts(Drawing([[(5.54, 5.54), (3.74, 5.54)]], 1.0, 3.0, 7, [])),
+                             load(DEFAULT)))
+    score, said = scores['The letter drawn is the expected one']
+    assert score == 0 and said.startswith('no letter reads from the ink: a dash, 1.80 m across '
+                                          'and 0.00 m high')
+    assert scores['Its accuracy'] == (0, f'not scored: {said}')
+
+
 def test_a_drawing_that_never_ends():
     lines = scores_of(grade(facts(Drawing([L_PATH], 1.0, None, 900, [])), load(DEFAULT)))
     assert lines['The drawing ends, the turtle standing still'][0] == 0
