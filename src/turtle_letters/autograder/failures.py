@@ -34,10 +34,20 @@ def why_not_launched(output, events, work):
         return died
     if graph is None:
         return last_error(output) or "the grader's watcher saw no ROS graph"
+    if seen.unheard(events):
+        return f'no node subscribed to /chatter, and no turtle moved: {unheard_said(events)}'
     if graph.get('offered'):
         return f'no node subscribed to /chatter, and no turtle moved: {waits_for_calls(graph)}'
     return ('no node subscribed to /chatter, and no turtle moved: is the controller started by '
             'the launch file?')
+
+
+def unheard_said(events):
+    """Words for the commands no turtle heard (observations.unheard), or ''."""
+    topics = seen.unheard(events)
+    said = '; '.join(f'{", ".join(nodes)} published on {topic}, which no turtle hears'
+                     for topic, nodes in sorted(topics.items()))
+    return f"{said} (turtlesim's turtle1 hears /turtle1/cmd_vel)" if said else ''
 
 
 def roslaunch_exception(output, work=''):
@@ -167,12 +177,14 @@ def talker_failure(output, work):
     return first_death(output, work) or last_error(output, node_logs(work))
 
 
-def why_still(output, work, listeners, offered=None):
+def why_still(output, work, listeners, offered=None, events=()):
     """Why the turtle never moved after the trigger: a node that died after
-    it, else the last error line of the nodes that listen on /chatter, else
-    the services the package's nodes offer (`offered`: {node: [service]}):
-    a package that draws only when its own service is called."""
-    found = first_death(output, work) or last_error(
+    it, else commands published where no turtle hears them (`events`: the
+    watcher's), else the last error line of the nodes that listen on
+    /chatter, else the services the package's nodes offer (`offered`:
+    {node: [service]}): a package that draws only when its own service is
+    called."""
+    found = first_death(output, work) or unheard_said(events) or last_error(
         output, *[node_logs(work, name.rsplit('/', 1)[-1]) for name in listeners])
     if found or not offered:
         return found

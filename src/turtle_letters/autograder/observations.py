@@ -16,6 +16,7 @@ from ..letters.layout import DEFAULT_BACKGROUND
 
 WATCHER = '/grade_watch'    # the grader's watcher's node name (watch.py)
 POSE_TYPE = 'turtlesim/Pose'    # what a turtle's pose is published as
+TWIST_TYPE = 'geometry_msgs/Twist'  # what a turtle is commanded by
 TURTLESIM_SERVICES = ('/spawn', '/kill', '/clear', '/reset')
 COUNTED = 0.1           # s: the watcher counts /chatter over this period
 FLOOD_WINDOW = 1.0      # s over which /chatter's rate is judged
@@ -217,7 +218,26 @@ def roles(state, types, ours):
                 chatter_subscribers=[n for n in dict(subscribers).get('/chatter', [])
                                      if n not in ours],
                 simulator=[n for n in dict(services).get('/spawn', []) if n not in ours],
-                offered=_offered(services, ours))
+                offered=_offered(services, ours),
+                unheard=_unheard(publishers, subscribers, types, ours))
+
+
+def _unheard(publishers, subscribers, types, ours):
+    """{topic: [nodes]}: the Twist topics nodes not ours publish and no node
+    subscribes to: commands no turtle hears (a turtlebot's /cmd_vel)."""
+    heard = {topic for topic, nodes in subscribers if nodes}
+    return {topic: sorted(n for n in nodes if n not in ours) for topic, nodes in publishers
+            if types.get(topic) == TWIST_TYPE and topic not in heard
+            and any(n not in ours for n in nodes)}
+
+
+def unheard(events):
+    """{topic: [nodes]} of every graph event's unheard commands (_unheard)."""
+    found = {}
+    for e in events:
+        for topic, nodes in e.get('unheard', {}).items() if e['kind'] == 'graph' else ():
+            found[topic] = sorted(set(found.get(topic, [])) | set(nodes))
+    return found
 
 
 def _offered(services, ours):

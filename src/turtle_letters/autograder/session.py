@@ -446,7 +446,7 @@ def _explain(result, terminal, work):
         graph = seen.last_graph(result.events)
         result.stuck = why_still(terminal.text(result.still_from), work,
                                  graph['chatter_subscribers'] if graph else [],
-                                 graph.get('offered') if graph else None)
+                                 graph.get('offered') if graph else None, result.events)
 
 
 def _stood(record, since, settle, scripts):

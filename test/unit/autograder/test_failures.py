@@ -133,3 +133,16 @@ def test_a_script_whose_bang_names_a_program_the_machine_lacks_says_so(tmp_path)
               '[s0-1] process has died [pid 21, exit code 127, cmd /w/s.py].\n')
     assert talker_failure(output, str(tmp_path)) == \
         's0 died: /usr/bin/env: \u2018python2\u2019: No such file or directory'
+
+
+def test_commands_no_turtle_hears_are_why_nothing_moved(tmp_path):
+    """A real class's node published its T on /cmd_vel, a turtlebot's
+    topic, and exited: the lab never came up, and the row said to check
+    the launch file (the grader's own, the package having none)."""
+    graph = dict(kind='graph', t=0, simulator=[], chatter_subscribers=[],
+                 unheard={'/cmd_vel': ['/my_initials_1']})
+    said = ("/my_initials_1 published on /cmd_vel, which no turtle hears (turtlesim's turtle1 "
+            "hears /turtle1/cmd_vel)")
+    assert why_not_launched('', [graph], str(tmp_path)) == \
+        f'no node subscribed to /chatter, and no turtle moved: {said}'
+    assert why_still('', str(tmp_path), ['/l'], None, [graph]) == said

@@ -5,7 +5,7 @@ import pytest
 from turtle_letters.autograder.observations import (SCRIPT_PAUSE, chatter_peak, drawing, drew,
                                                    looked_for_from, moved, one_driver,
                                                    own_triggers, stood_for, strokes, roles,
-                                                   trigger, unprompted)
+                                                   trigger, unheard, unprompted)
 
 TICK = 0.016
 PEN = [179, 184, 255, 3]
@@ -239,7 +239,7 @@ def test_only_a_turtlesim_pose_published_by_a_cadets_node_poses_as_turtlesim():
     found = roles(state, types, ('/grade_watch', '/grading_turtlesim'))
     assert found == dict(pose_publishers=['/fake'], cmd_vel_publishers=['/drawer'],
                          chatter_publishers=['/talker'], chatter_subscribers=['/drawer'],
-                         simulator=[], offered={})
+                         simulator=[], offered={}, unheard={'/turtle1/cmd_vel': ['/drawer']})
 
 
 def test_the_services_a_cadets_nodes_offer_are_named_but_their_loggers():
@@ -265,3 +265,16 @@ def test_one_node_acted_alone_only_if_the_simulator_took_commands_and_calls_from
     assert one_driver(drove + by + [dict(k='by', t=0.5, node='/controller0')])
     assert not one_driver(drove + by + [dict(k='by', t=2.0, node='/rosservice_12_34')])
     assert not one_driver(drove)        # none said to act: who drove is not known
+
+def test_commands_published_where_no_node_subscribes_are_unheard():
+    """A real class's node published its Twist on /cmd_vel (a turtlebot's),
+    where no turtle listens: nothing moved, and the row must say why."""
+    state = ([['/cmd_vel', ['/my_initials_1']], ['/turtle1/cmd_vel', ['/drawer']],
+              ['/goal', ['/drawer']]],
+             [['/turtle1/cmd_vel', ['/grading_turtlesim']], ['/cmd_vel', []]], [])
+    types = [['/cmd_vel', 'geometry_msgs/Twist'], ['/turtle1/cmd_vel', 'geometry_msgs/Twist'],
+             ['/goal', 'turtlesim/Pose']]
+    found = roles(state, types, ('/grade_watch', '/grading_turtlesim'))
+    assert found['unheard'] == {'/cmd_vel': ['/my_initials_1']}
+    gone = dict(kind='graph', t=2.0, unheard={})        # the node exited: the master forgot it
+    assert unheard([dict(found, kind='graph', t=1.0), gone]) == {'/cmd_vel': ['/my_initials_1']}
