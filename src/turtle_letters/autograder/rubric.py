@@ -278,7 +278,7 @@ def _letter_read(facts, _):
     if not read and facts.drawing and facts.drawing.strokes:     # ink of no shape (ink.dash)
         _, _, w, h = box(facts.drawing.points)
         return 0.0, (f'no letter reads from the ink: a dash, {w:.2f} m across and {h:.2f} m '
-                     f'high (a turtle driven straight, no letter drawn)')
+                     f'high (no letter is drawn so flat)')
     if not read:
         teleported = facts.drawing.jump_ink if facts.drawing else 0
         return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '
