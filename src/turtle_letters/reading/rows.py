@@ -208,7 +208,9 @@ def cut(row, expected, ahead=True):
     letter too (the last cut: the rest as the last letter; an earlier
     one: the next even share). (From 0.1 to 1.9 for every letter, the
     recognition benchmark read 10 more rows with an I and 10 fewer of
-    outlines, cut where a sliver fit.)"""
+    outlines, cut where a sliver fit.) A narrow row is one letter: no cut."""
+    if narrow(row.ink):
+        return []
     end = row.x0 + row.width
     share, cuts, left = row.width / len(expected), [], row.x0 - 1e-9     # a part is (left, right]
     for k, letter in enumerate(expected[:-1]):
@@ -232,6 +234,19 @@ def cut(row, expected, ahead=True):
                         key=lambda x: row.ink_near(x, share / 40)))
         left = cuts[-1]
     return cuts
+
+
+def narrow(ink):
+    """Whether `ink`, as it lies, is narrower than BARE of its height: one
+    stroke's width, a letter at most, never a row of them side by side.
+    (Cut along its length, a real class's one stroke, bent at its top,
+    read as two slivers and an I; turned to lie as low as it may, a
+    straight stroke's cuts read as no letter in the place of its I.)"""
+    points = [p for line in ink for p in line]
+    if len(points) < 2:
+        return False
+    _, _, width, height = box(points)
+    return width < BARE * height
 
 
 @functools.lru_cache(maxsize=1)
@@ -385,13 +400,13 @@ def read_row(ink, expected='') -> List[Reading]:
     height reads only as Row.reading says (a small o after a J does; a
     quarter of an S's curve beside a whole U is no I). A flood of ink
     (ink.flooded) is no letter, nor a shape of one, and nor is a dash
-    (ink.dash: a line driven level)."""
+    (ink.dash: a line driven level). A narrow row is one letter (narrow)."""
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
     if flooded(ink, max(1, count)) or dash(ink, max(1, count)):
         return [Reading(None, None, {}) for _ in range(max(1, count))]
-    if count <= 1:
-        return [Row(ink).reading(ink, exact=expected if isinstance(expected, str) else '')]
+    if count <= 1 or narrow(ink):
+        return [Row(ink).reading(ink, exact=expected[:1] if isinstance(expected, str) else '')]
     if not isinstance(expected, str):
         row = Row(ink)
         return [row.reading(group) for group in apart(ink)]
@@ -509,6 +524,8 @@ def read_blind(ink, count):
     ink = without_specks(ink)
     if dash(ink, count):
         return [Reading(None, None, {}) for _ in range(count)]
+    if narrow(ink):
+        return [Row(ink).reading(ink)]
     return _blind(row_of(levels(ink, count)[0][2]), count)
 
 

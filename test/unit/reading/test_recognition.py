@@ -667,14 +667,25 @@ def test_a_loop_whose_middle_line_is_one_point_reads_as_no_letter():
     assert len(read_row(row('K') + [ring], 'KO')) == 2
 
 
-@pytest.mark.parametrize('expected, credited', [('USI', 0), ('SI', 0), ('IS', 1)])
-def test_one_stroke_is_one_letter_however_many_are_expected(expected, credited):
+def bent_at_its_top(bend, top=1.2, length=4.3):
+    """A stroke up, straight, then its last `top` metres bending left by `bend`, more the higher."""
+    return [(0.9 - bend * max(0.0, (y - length + top) / top) ** 2, 3.3 + y)
+            for y in (i * 0.016 for i in range(int(length / 0.016) + 1))]
+
+
+@pytest.mark.parametrize('expected, credited', [('USI', 0), ('SI', 0), ('UI', 0), ('IS', 1)])
+@pytest.mark.parametrize('bend', [None, 0.0, 0.05, 0.12, 0.3])
+def test_one_stroke_is_one_letter_however_many_are_expected(expected, credited, bend):
     """A canvas holding one stroke, a U's first leg where USI was being
-    drawn (a real class's, cleared at the end of its run), a tiny hook
-    at its top: cut for three letters, the hook's part lent the whole
-    stroke read as the I of USI. One stroke is one letter: an I, credited
+    drawn (two of a real class's, cleared at the end of their runs): a
+    tiny hook at its top (None), or bent at its top. Cut for three
+    letters, the hook's part lent the whole stroke read as the I of USI;
+    the bent stroke was cut along its length into two slivers and an I.
+    Turned to lie as low as it may, 50 degrees, a straight stroke's cuts
+    were no letter, nor the I. One stroke is one letter: an I, credited
     only in its place."""
-    line = [(1.02, 8.9), (1.0, 8.85)] + [(1.0, 8.8 - i * 0.05) for i in range(121)]
+    line = [(1.02, 8.9), (1.0, 8.85)] + [(1.0, 8.8 - i * 0.05) for i in range(121)] \
+        if bend is None else bent_at_its_top(bend)
     readings = read_row([line], expected)
     assert sum(r.letter == e for r, e in zip(readings, expected)) == credited, readings
     assert [r.letter for r in readings if r.letter] == ['I']
