@@ -53,6 +53,10 @@ TWIN_LEVEL = 5
 # A box this wide for its height is a block I's edge and a square O alike: no letter.
 # (A DejaVu Sans Bold I stretched to 0.48 was credited as the O it was graded against.)
 DOUBTFUL_BOX = (0.3, 0.5)
+# A letter read past CLEAN whose mirror image fits it within MIRRORED times as far off
+# is that letter drawn backwards: a turtle's R with its bowl left of its stem fit a
+# script family's R within its 10% exactly, and mirrored back, a turtle's R within 2%.
+MIRRORED = 0.5
 
 
 class Fit(NamedTuple):
@@ -265,15 +269,27 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     fit best are left out: a row's cuts ask only how well a part fits. A
     box DOUBTFUL_BOX wide for its height (ink.boxed) reads as no letter, and
     a bare stroke (ink.straight) as an I or none: a line sloped 27 degrees
-    fit a J tilted 52 within 8% of its height, its hook no more than that."""
+    fit a J tilted 52 within 8% of its height, its hook no more than that.
+    Nor is a letter drawn backwards read (_backwards)."""
     points = [p for line in ink for p in line]
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
     reading = _read_either(ink, letters, tilts, finer, refined)
     if reading.letter not in (None, 'I') and straight(ink) or \
-            reading.letter is not None and DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1]:
+            reading.letter is not None and DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1] \
+            or _backwards(ink, reading, tilts, finer):
         return Reading(None, reading.best, reading.fits)
     return reading
+
+
+def _backwards(ink, reading, tilts, finer):
+    """Whether the letter read, past CLEAN, is drawn backwards: the ink's
+    mirror image fits it within MIRRORED times as far off."""
+    if reading.letter is None or reading.best.fit <= CLEAN:
+        return False
+    mirror = [[(-x, y) for x, y in line] for line in ink]
+    back = _read_either(mirror, reading.letter, tilts, finer, 1).best
+    return back is not None and back.fit <= MIRRORED * reading.best.fit
 
 
 def _read_either(ink, letters, tilts, finer, refined):

@@ -577,6 +577,21 @@ def test_a_b_of_one_loop_its_bowls_meeting_inside_off_its_back(tilt):
     assert read(turned([[(-x, y) for x, y in b]], tilt, (0.0, 0.0))).letter != 'B'
 
 
+@pytest.mark.parametrize('radius, reach', [(0.7, 0.9), (0.75, 0.9), (0.75, 1.2), (0.85, 1.2)])
+@pytest.mark.parametrize('tilt', [0, -25, 40])
+def test_a_turtles_r_of_a_round_bowl_is_an_r_and_mirrored_no_r(radius, reach, tilt):
+    """An R as a turtle drives it, 3 m high: up its stem, round a half
+    circle of `radius` back to the stem, its leg from there `reach` out to
+    the foot. Its mirror image, the bowl left of the stem, is an R drawn
+    backwards: no R (a script family's R fit it within its 10%, and one of
+    these read R only as well as its mirror did, or not at all)."""
+    junction = 3 - 2 * radius
+    r = driven([turn(PI / 2), forward(3), turn(-PI / 2), arc(radius, -PI),
+                turn(PI - math.atan2(junction, reach)), forward(math.hypot(reach, junction))])
+    assert read(turned([r], tilt, (0.0, 0.0))).letter == 'R'
+    assert read(turned([[(-x, y) for x, y in r]], tilt, (0.0, 0.0))).letter != 'R'
+
+
 def _turtles_a(way, left, height, tail):
     """A small a as a turtle drives it, `height` high: round its bowl from
     its right, then down its stem ('bowl first'); or up its stem, then
