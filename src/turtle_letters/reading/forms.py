@@ -43,8 +43,10 @@ _LOOP_B = [(0, 0.27)] + _round((0.27, 0.73), 0.27, 180, -75) + \
 # across its top (two other classes' Jo, one with its hook curled on up), a
 # small a as a turtle draws it, a round bowl and a stem down its right side
 # from the bowl's middle (a real class's Ma and Ca; futural's a has its stem
-# from the top). A square-cornered O is an O: no D is drawn with four right
-# angles. (The recognition benchmark draws each letter's last form here as a
+# from the top), an R of a stem, a round bowl half its height and a leg from
+# the stem (a real class's R; the mirror of one fit a script R as well as
+# it did: recognition.MIRRORED). A square-cornered O is an O: no D is drawn
+# with four right angles. (The recognition benchmark draws each letter's last form here as a
 # cadet's.)
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('A', [_BOWL + [(0.9, 0)]]),                    # a small a: its bowl, then down
@@ -70,9 +72,9 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('O', [_SQUARE_O]),
     ('P', [_SQUARE_P]),
     ('Q', [_SQUARE_O, [(0.35, 0.3), (0.6, 0)]]),
+    ('R', [[(0, 0), (0, 1)] + _round((0, 0.75), 0.25, 90, -90)[1:] + [(0.35, 0)]]),  # round bowl
     ('R', [_SQUARE_P + [(0.6, 0)]]),
     ('R', [_SQUARE_P + [(0.3, 0.5), (0.6, 0)]]),
-    ('R', [[(0, 0), (0, 1)] + _round((0, 0.75), 0.25, 90, -90)[1:] + [(0.35, 0)]]),  # round bowl
     ('S', [[(0.6, 1), (0, 1), (0, 0.5), (0.6, 0.5), (0.6, 0), (0, 0)]]),
     ('U', [[(0, 1), (0, 0), (0.6, 0), (0.6, 1)]]),
     ('W', [[(0, 1), (0.175, 0), (0.35, 1), (0.525, 0), (0.7, 1)]]),
