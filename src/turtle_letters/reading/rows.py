@@ -237,16 +237,17 @@ def cut(row, expected, ahead=True):
 
 
 def narrow(ink):
-    """Whether `ink`, as it lies, is narrower than BARE of its height: one
-    stroke's width, a letter at most, never a row of them side by side.
-    (Cut along its length, a real class's one stroke, bent at its top,
-    read as two slivers and an I; turned to lie as low as it may, a
-    straight stroke's cuts read as no letter in the place of its I.)"""
+    """Whether `ink`, as it lies, is one letter set apart (apart) and
+    narrower than BARE of its height: one stroke's width, a letter at most,
+    never a row of them side by side. (Cut along its length, a real class's
+    one stroke, bent at its top, read as two slivers and an I; turned to
+    lie as low as it may, a straight stroke's cuts read as no letter in the
+    place of its I. Two I's side by side, however near, are two letters.)"""
     points = [p for line in ink for p in line]
     if len(points) < 2:
         return False
     _, _, width, height = box(points)
-    return width < BARE * height
+    return width < BARE * height and len(apart(ink)) == 1
 
 
 @functools.lru_cache(maxsize=1)

@@ -706,6 +706,15 @@ def test_one_stroke_is_one_letter_however_many_are_expected(expected, credited, 
     assert [r.letter for r in readings if r.letter] == ['I']
 
 
+@pytest.mark.parametrize('apart', [0.35, 0.45, 0.6])
+def test_two_strokes_side_by_side_narrower_than_a_fifth_of_their_height_are_two_is(apart):
+    """Two I's 3 m high, `apart` m apart: a row narrower than a fifth of
+    its height, yet two letters set apart, each read (a row that narrow
+    is one letter only where it is one stroke)."""
+    ink = [[(x, 3 + i * 0.05) for i in range(61)] for x in (1.0, 1.0 + apart)]
+    assert [r.letter for r in read_row(ink, 'II')] == ['I', 'I']
+
+
 def curve(start, end, centre=(3.0, 9.0), radii=(1.4, 1.0)):
     """An ellipse's arc, counter-clockwise from `start` to `end` degrees."""
     return [(centre[0] + radii[0] * math.cos(math.radians(start + (end - start) * i / 40)),
