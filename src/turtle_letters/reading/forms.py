@@ -45,7 +45,8 @@ _LOOP_B = [(0, 0.27)] + _round((0.27, 0.73), 0.27, 180, -75) + \
 # from the bowl's middle (a real class's Ma and Ca; futural's a has its stem
 # from the top), an R of a stem, a round bowl half its height and a leg from
 # the stem (a real class's R; the mirror of one fit a script R as well as
-# it did: recognition.MIRRORED). A square-cornered O is an O: no D is drawn
+# it did: recognition.MIRRORED), a B of a stem and two round bowls (a gothic
+# L fit one with its bar run on past its stem nearer than any B). A square-cornered O is an O: no D is drawn
 # with four right angles. (The recognition benchmark draws each letter's last form here as a
 # cadet's.)
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
@@ -55,6 +56,8 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.075, 0.25), (0.525, 0.25)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.12, 0.4), (0.48, 0.4)]]),
     ('A', [[(0, 0), (0.3, 1), (0.6, 0)], [(0.15, 0.5), (0.45, 0.5)]]),
+    ('B', [[(0, 0), (0, 1)] + _round((0, 0.75), 0.25, 90, -90)[1:] +
+           _round((0, 0.25), 0.25, 90, -90)[1:]]),     # round bowls
     ('B', [_SQUARE_P, [(0.6, 0.5), (0.6, 0), (0, 0)]]),
     ('C', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0)]]),
     ('G', [[(0.6, 1), (0, 1), (0, 0), (0.6, 0), (0.6, 0.45), (0.3, 0.45)]]),

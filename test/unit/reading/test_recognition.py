@@ -592,6 +592,20 @@ def test_a_turtles_r_of_a_round_bowl_is_an_r_and_mirrored_no_r(radius, reach, ti
     assert read(turned([[(-x, y) for x, y in r]], tilt, (0.0, 0.0))).letter != 'R'
 
 
+@pytest.mark.parametrize('spur', [0.2, 0.35])
+@pytest.mark.parametrize('top', [0.7, 0.8])
+@pytest.mark.parametrize('lean', [0.0, 0.1])
+def test_a_turtles_b_of_round_bowls_its_bar_run_on_is_a_b_or_no_letter(spur, top, lean):
+    """A real class's B as a turtle drives it: up its stem (leaning `lean`
+    radians), round a bowl of radius `top` back to the stem's middle, its
+    bar run on `spur` m past the stem and back, round the other bowl to
+    the foot. A TA reads a B; it is a B or no letter, never another (with
+    the top bowl 0.8, a gothic L fit it 7.3% off, nearer than any B)."""
+    b = driven([turn(PI / 2 - lean), forward(3), turn(-PI / 2 + lean), arc(top, -PI),
+                forward(spur), turn(PI), forward(spur), arc(1.5 - top, -PI)])
+    assert read([b]).letter in ('B', None)
+
+
 def _turtles_a(way, left, height, tail):
     """A small a as a turtle drives it, `height` high: round its bowl from
     its right, then down its stem ('bowl first'); or up its stem, then
