@@ -46,9 +46,9 @@ _LOOP_B = [(0, 0.27)] + _round((0.27, 0.73), 0.27, 180, -75) + \
 # from the top), an R of a stem, a round bowl half its height and a leg from
 # the stem (a real class's R; the mirror of one fit a script R as well as
 # it did: recognition.MIRRORED), a B of a stem and two round bowls (a gothic
-# L fit one with its bar run on past its stem nearer than any B). A square-cornered O is an O: no D is drawn
-# with four right angles. (The recognition benchmark draws each letter's last form here as a
-# cadet's.)
+# L fit one with its bar run on past its stem nearer than any B). A
+# square-cornered O is an O: no D is drawn with four right angles. (The
+# recognition benchmark draws each letter's last form here as a cadet's.)
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('A', [_BOWL + [(0.9, 0)]]),                    # a small a: its bowl, then down
     ('A', [[(0.9, 0)] + _BOWL[:19]]),               # ... up, then round three quarters

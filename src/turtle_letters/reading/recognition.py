@@ -55,7 +55,7 @@ TWIN_LEVEL = 5
 DOUBTFUL_BOX = (0.3, 0.5)
 # A letter read past CLEAN whose mirror image fits it within MIRRORED times as far off
 # is that letter drawn backwards: a turtle's R with its bowl left of its stem fit a
-# script family's R within its 10% exactly, and mirrored back, a turtle's R within 2%.
+# script family's R within its 10% exactly, and mirrored back, a turtle's R within 3%.
 MIRRORED = 0.5
 
 
@@ -275,9 +275,10 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
     reading = _read_either(ink, letters, tilts, finer, refined)
-    if reading.letter not in (None, 'I') and straight(ink) or \
-            reading.letter is not None and DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1] \
-            or _backwards(ink, reading, tilts, finer):
+    doubtful = reading.letter is not None and \
+        DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1]
+    if reading.letter not in (None, 'I') and straight(ink) or doubtful or \
+            _backwards(ink, reading, tilts, finer):
         return Reading(None, reading.best, reading.fits)
     return reading
 

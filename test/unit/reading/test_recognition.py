@@ -697,7 +697,7 @@ def test_a_loop_whose_middle_line_is_one_point_reads_as_no_letter():
 
 
 def bent_at_its_top(bend, top=1.2, length=4.3):
-    """A stroke up, straight, then its last `top` metres bending left by `bend`, more the higher."""
+    """A stroke up, straight, then its last `top` m bending left by `bend`, more the higher."""
     return [(0.9 - bend * max(0.0, (y - length + top) / top) ** 2, 3.3 + y)
             for y in (i * 0.016 for i in range(int(length / 0.016) + 1))]
 
