@@ -14,9 +14,12 @@ credited, the figure that must stay 0, is a drawing any letter of which is
 credited where another was drawn (the whole text, or one letter in its
 place: a row that does not read whole earns a share for each letter read
 in place). Figures for the strokes' reader, OCR, and the two combined
-as the grader combines them.
+as the grader combines them. `--drawings FILE` keeps each drawing's
+verdict; `--against FILE` of an earlier run names the drawings whose
+verdict a change moved, and any the corpus itself changed.
 """
 import argparse
+import json
 import math
 import multiprocessing
 import random
@@ -34,6 +37,7 @@ from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
 
 HERSHEY = ('rowmans', 'rowmand', 'rowmant', 'timesi', 'scripts', 'gothiceng')
 TARGET_RIGHT, TARGET_WORST_S = 97.0, 1.0
+READERS = ('strokes', 'ocr', 'both')
 
 
 def corpus_fonts():
@@ -119,6 +123,22 @@ def credited_wrongly(ink, text, other):
 _fonts = []     # each worker's corpus fonts, loaded once
 
 
+def read_drawings(path):
+    """The records of a --drawings FILE; ValueError naming the first line that is none."""
+    drawings = []
+    with open(path) as lines:
+        for number, line in enumerate(lines, 1):
+            try:
+                drawing = json.loads(line)
+                fields = {'n', 'family', 'texts', *READERS} <= set(drawing)
+            except (ValueError, TypeError):
+                fields = False
+            if not fields:
+                raise ValueError(f"line {number} is not a drawing's record of --drawings")
+            drawings.append(drawing)
+    return drawings
+
+
 def one_drawing(job):
     """Drawing n of the corpus (its own random stream, whatever the
     workers), read against its own text, against another at random, and
@@ -147,14 +167,17 @@ def one_drawing(job):
         'both': (told == text or o, bool(wt or wo), s_time + (0.0 if told == text else o_time))}
 
 
-def recognition_run(singles=2000, rows=500, seed=1, jobs=1):
+def recognition_run(singles=2000, rows=500, seed=1, jobs=1, drawings=None):
     """The corpus read, `jobs` drawings at a time (each reader's time is
-    measured while the others read too)."""
-    tally = {name: dict(right=0, wrong=0, seconds=[]) for name in ('strokes', 'ocr', 'both')}
+    measured while the others read too); each drawing's record (record())
+    appended to the list `drawings`, if given."""
+    tally = {name: dict(right=0, wrong=0, seconds=[]) for name in READERS}
     by_family, wrongs = {}, []
     work = [(n, singles, seed) for n in range(singles + rows)]
     with multiprocessing.Pool(jobs) as pool:
         for n, (family, texts, results) in enumerate(pool.imap(one_drawing, work, chunksize=8)):
+            if drawings is not None:
+                drawings.append(record(n, family, texts, results))
             for name, (right, wrong, seconds) in results.items():
                 tally[name]['right'] += right
                 tally[name]['wrong'] += wrong
@@ -167,6 +190,45 @@ def recognition_run(singles=2000, rows=500, seed=1, jobs=1):
                    median_s=statistics.median(t['seconds']), worst_s=max(t['seconds']))
         for name, t in tally.items()},
         families={f: 100 * sum(r) / len(r) for f, r in by_family.items()})
+
+
+def record(n, family, texts, results):
+    """Drawing n's outcome, as a line of a --drawings file: its family, its
+    text and what it was graded against, and each reader's verdict."""
+    return dict(n=n, family=family, texts=texts, **{
+        name: dict(right=right, wrong=wrong, seconds=round(seconds, 4))
+        for name, (right, wrong, seconds) in results.items()})
+
+
+def changes(before, after):
+    """Lines for the drawings whose verdict differs between two runs'
+    records, by drawing number: a reading changed, or the corpus did (a
+    drawing of another text: a form added after a letter's last one in
+    forms.VARIANTS changes the cadets' drawings, and every figure with them)."""
+    old = {d['n']: d for d in before}
+    lines = []
+    for d in after:
+        was = old.get(d['n'])
+        if was is None:
+            continue
+        if _drawn(was) != _drawn(d):
+            lines.append(f"drawing {d['n']}: the corpus changed ({was['family']} {_drawn(was)} "
+                         f"is now {d['family']} {_drawn(d)})")
+            continue
+        moved = [f'{name} {_verdict(d[name])} (was {_verdict(was[name])})' for name in READERS
+                 if _verdict(d[name]) != _verdict(was[name])]
+        if moved:
+            lines.append(f"drawing {d['n']}, {d['family']} {d['texts']}: " + '; '.join(moved))
+    return lines
+
+
+def _drawn(drawing):
+    return drawing['texts'].split(' as ')[0]
+
+
+def _verdict(reader):
+    return ('read right' if reader['right'] else 'not read') + \
+        (', a wrong letter credited' if reader['wrong'] else '')
 
 
 def recognition_lines(results):
@@ -195,7 +257,25 @@ if __name__ == '__main__':
     parser.add_argument('singles', type=int, nargs='?', default=2000)
     parser.add_argument('rows', type=int, nargs='?', default=500)
     parser.add_argument('--jobs', type=int, default=1, help='drawings read at a time')
+    parser.add_argument('--drawings', metavar='FILE',
+                        help="write each drawing's verdict to FILE, a JSON object a line")
+    parser.add_argument('--against', metavar='FILE',
+                        help="a --drawings FILE of an earlier run of the same corpus: print "
+                             'the drawings whose verdict changed since')
     args = parser.parse_args()
-    for line in recognition_lines({'recognition': recognition_run(args.singles, args.rows,
-                                                                  jobs=args.jobs)}):
+    try:
+        before = read_drawings(args.against) if args.against else None
+    except (OSError, ValueError) as e:
+        parser.error(f'--against {args.against}: {e}')
+    drawings = []
+    run = recognition_run(args.singles, args.rows, jobs=args.jobs, drawings=drawings)
+    for line in recognition_lines({'recognition': run}):
         print(line)
+    if args.drawings:
+        with open(args.drawings, 'w') as out:
+            out.writelines(json.dumps(d) + '\n' for d in drawings)
+    if before is not None:
+        moved = changes(before, drawings)
+        print(f'changed since {args.against}: {len(moved)} of {len(drawings)} drawings')
+        for line in moved:
+            print(f'  {line}')

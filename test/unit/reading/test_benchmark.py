@@ -2,6 +2,7 @@
 drawing against what the readers take it for: a confusion of the
 readers' counts as the wrong credit it would be in a class."""
 import os
+import subprocess
 import sys
 
 from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
@@ -33,3 +34,31 @@ def test_a_letter_credited_in_place_where_another_was_drawn_is_wrong():
     assert bench_recognition.wrong_in_place('ZF', 'ZT', 'ZF')
     assert not bench_recognition.wrong_in_place('Z?', 'ZT', 'ZF')
     assert not bench_recognition.wrong_in_place('ZT', 'ZT', 'ZT')
+
+
+def test_two_runs_of_the_corpus_are_compared_drawing_by_drawing():
+    """--against names the drawings whose verdict moved, and the drawings
+    that are no longer the same (a form added after a letter's last one
+    changes the cadets' drawings, and every figure with them)."""
+    first, again, other_seed = [], [], []
+    bench_recognition.recognition_run(2, 1, drawings=first)
+    bench_recognition.recognition_run(2, 1, drawings=again)
+    bench_recognition.recognition_run(2, 1, seed=2, drawings=other_seed)
+    assert [d['texts'] for d in first] == [d['texts'] for d in again]
+    assert bench_recognition.changes(first, again) == []
+    moved = [dict(d, both=dict(d['both'], right=not d['both']['right'])) if d['n'] == 1 else d
+             for d in again]
+    lines = bench_recognition.changes(first, moved)
+    assert len(lines) == 1 and lines[0].startswith('drawing 1, ') and '(was ' in lines[0]
+    changed = bench_recognition.changes(first, other_seed)
+    assert changed and all('the corpus changed' in line for line in changed)
+
+
+def test_a_file_of_no_drawings_to_compare_against_is_refused_before_the_run(tmp_path):
+    path = tmp_path / 'drawings.jsonl'
+    path.write_text('{"n": 0}\n')
+    tool = os.path.join(os.path.dirname(bench_recognition.__file__), 'bench_recognition.py')
+    done = subprocess.run([sys.executable, tool, '1', '0', '--against', str(path)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and "line 1 is not a drawing's record" in done.stderr
+    assert 'recognition,' not in done.stdout
