@@ -258,7 +258,8 @@ if __name__ == '__main__':
     parser.add_argument('rows', type=int, nargs='?', default=500)
     parser.add_argument('--jobs', type=int, default=1, help='drawings read at a time')
     parser.add_argument('--drawings', metavar='FILE',
-                        help="write each drawing's verdict to FILE, a JSON object a line")
+                        help="write each drawing's verdict to FILE, a JSON object a line "
+                             '(opened before the run: a path that cannot be written stops it)')
     parser.add_argument('--against', metavar='FILE',
                         help="a --drawings FILE of an earlier run of the same corpus: print "
                              'the drawings whose verdict changed since')
@@ -267,12 +268,16 @@ if __name__ == '__main__':
         before = read_drawings(args.against) if args.against else None
     except (OSError, ValueError) as e:
         parser.error(f'--against {args.against}: {e}')
+    try:    # after --against is read: the two may be one file
+        out = open(args.drawings, 'w') if args.drawings else None
+    except OSError as e:
+        parser.error(f'--drawings {args.drawings}: {e}')
     drawings = []
     run = recognition_run(args.singles, args.rows, jobs=args.jobs, drawings=drawings)
     for line in recognition_lines({'recognition': run}):
         print(line)
-    if args.drawings:
-        with open(args.drawings, 'w') as out:
+    if out is not None:
+        with out:
             out.writelines(json.dumps(d) + '\n' for d in drawings)
     if before is not None:
         moved = changes(before, drawings)

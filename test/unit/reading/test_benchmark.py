@@ -62,3 +62,12 @@ def test_a_file_of_no_drawings_to_compare_against_is_refused_before_the_run(tmp_
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 2 and "line 1 is not a drawing's record" in done.stderr
     assert 'recognition,' not in done.stdout
+
+
+def test_a_drawings_file_that_cannot_be_written_is_refused_before_the_run(tmp_path):
+    tool = os.path.join(os.path.dirname(bench_recognition.__file__), 'bench_recognition.py')
+    done = subprocess.run([sys.executable, tool, '1', '0', '--drawings',
+                           str(tmp_path / 'no such folder' / 'drawings.jsonl')],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and '--drawings' in done.stderr
+    assert 'recognition,' not in done.stdout
