@@ -30,7 +30,7 @@ import time
 from turtle_letters.reading.forms import VARIANTS
 from turtle_letters.reading.ink import turned
 from turtle_letters.reading.ocr import read_text, supports, told_apart
-from turtle_letters.reading.rows import read_row
+from turtle_letters.reading.page import read_page
 from turtle_letters.letters.hershey import load_font
 from turtle_letters.letters.layout import SIM_TICK, WORLD_SIZE
 from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
@@ -89,10 +89,11 @@ def readers(ink, expected):
     of each alone. (The grader asks OCR only where the strokes do not read
     the expected text: the two combined count its time only there.)"""
     started = time.monotonic()
-    readings = read_row(ink, expected)
-    told = told_apart(ink, readings)    # timed with the strokes: the grader always asks
+    page = read_page(ink, [], expected)     # as the grader reads: the row, else its lines
+    readings = page.readings
+    told = told_apart(page.writing.ink, readings)   # timed with the strokes: the grader asks
     middle = time.monotonic()
-    ocr = read_text(ink, expected)
+    ocr = read_text(page.writing.ink, expected)
     seconds = (middle - started, time.monotonic() - middle)
     taken = {_letters(readings, guessed=True), ocr.text}
     taken = {text for text in taken if len(text) == len(expected) and text.isalpha()}

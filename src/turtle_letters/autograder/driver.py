@@ -3,8 +3,9 @@
     find     submission.find      the lab's package in the folder
     run      session.run          built, launched on the grader's world, P typed, watched
     observe  observations.of_run  the drawing in what the grader's simulator recorded
-    read     reading              the letters in its ink (a pen colour each, where as
-                                  many): the strokes, then OCR
+    read     reading.page         the letters in its ink (a pen colour each, where as
+                                  many; a frame or another line of writing left out
+                                  where only so they read): the strokes, then OCR
     alone    session.alone        executables started together that drew nothing of
                                   the letters, each run alone in a fresh world (a TA's try)
     score    rubric.grade         the points
@@ -21,7 +22,7 @@ import traceback
 
 from ..isolation.files import shown
 from ..reading.ocr import read_text, told_apart
-from ..reading.rows import in_colours, read_row
+from ..reading.page import Page, Writing, read_page
 from . import observations as seen
 from . import reports, rubric as rubrics, session, submission
 from .roster import Student
@@ -98,25 +99,25 @@ def _facts(student, rubric, place):
 def observed(expected, run, rubric):
     """The facts of one run: its steps, its drawing, the letters read in it."""
     drawing = seen.of_run(run, rubric.limits.settle)
-    readings, ocr = read(drawing, expected)
-    return rubrics.Facts.observed(expected, run, drawing, readings, ocr)
+    page, ocr = read(drawing, expected)
+    return rubrics.Facts.observed(expected, run, drawing, page, ocr)
 
 
 def read(drawing, expected):
-    """(the strokes' readings, OCR's or None): a letter in each pen colour
-    read alone where the ink comes in as many colours as letters expected
-    (rows.in_colours), else the row; OCR, the slower reader, is asked only
-    where the strokes do not read what was expected, or see another letter
-    as plainly (told_apart)."""
+    """(the letters read on the canvas, a reading.page.Page; OCR's reading
+    of the writing they were read in, or None): the strokes first
+    (page.read_page: a letter in each pen colour where there are as many,
+    else the row; a frame or another line of writing left out where only
+    so they read); OCR, the slower reader, is asked only where the strokes
+    do not read what was expected, or see another letter as plainly
+    (told_apart)."""
     if drawing is None or not drawing.strokes:
-        return [], None
-    letters = in_colours(drawing.strokes, drawing.looks, len(expected))
-    readings = [read_row(ink, letter)[0] for ink, letter in zip(letters, expected)] \
-        if letters else read_row(drawing.strokes, expected)
-    readings = told_apart(drawing.strokes, readings)
-    if rubrics.drawn(readings) == expected:
-        return readings, None
-    return readings, read_text(drawing.strokes, expected)
+        return Page([], Writing([], []), ''), None
+    page = read_page(drawing.strokes, drawing.looks, expected)
+    page = page._replace(readings=told_apart(page.writing.ink, page.readings))
+    if rubrics.drawn(page.readings) == expected:
+        return page, None
+    return page, read_text(page.writing.ink, expected)
 
 
 def each_alone(expected, rubric, box, facts, run):

@@ -77,6 +77,8 @@ class Facts(NamedTuple):
     broken: str = ''                # how the grader's master or simulator was broken, if it was
     ocr: Optional[OcrReading] = None    # what OCR reads in the ink (ocr.py), beside `readings`
     limit_s: Optional[float] = None     # s the drawing was watched for at most (session.Run)
+    writing: Optional[list] = None  # the ink the letters were read in, if not all the canvas's
+    where: str = ''                 # ... which of the canvas's writing that is, in words
 
     @classmethod
     def never_ran(cls, expected, problem):
@@ -85,14 +87,15 @@ class Facts(NamedTuple):
         return cls(expected, problem)
 
     @classmethod
-    def observed(cls, expected, run, drawing, readings, ocr):
+    def observed(cls, expected, run, drawing, page, ocr):
         """A run's facts: its steps (session.Run), the drawing seen in it and
-        the letters read from that drawing."""
+        the letters read from that drawing (a reading.page.Page)."""
         return cls(expected, build=run.build, launch=run.launch, waited=run.waited,
-                   talker=run.talker, drawing=drawing, readings=readings, stuck=run.stuck,
-                   limit=run.limit, own_triggers=own_triggers(run.events),
+                   talker=run.talker, drawing=drawing, readings=page.readings,
+                   stuck=run.stuck, limit=run.limit, own_triggers=own_triggers(run.events),
                    chatter_peak=chatter_peak(run.events), broken=run.broken, ocr=ocr,
-                   limit_s=run.limit_s)
+                   limit_s=run.limit_s, writing=page.writing.ink if page.where else None,
+                   where=page.where)
 
 
 class Mark(NamedTuple):
@@ -251,12 +254,18 @@ def _letter(facts, rubric):
     if by_ocr(facts) and not facts.broken:
         strokes = drawn(facts.readings) or 'no letter'
         return 1.0, (f'drew {facts.expected}, as expected: {ocr_said(facts.ocr)}; its strokes '
-                     f'read {strokes}' + _wiped(facts))
+                     f'read {strokes}' + _where(facts) + _wiped(facts))
     share, line = _letter_read(facts, rubric)
     shapes = _shapes(facts.readings)
     disagree = facts.ocr is not None and facts.ocr.text != drawn(facts.readings) and shapes
     return share, line + (f' ({ocr_said(facts.ocr)})' if disagree else '') + \
-        (_teleported(facts) if shapes and share < 1 else '') + _wiped(facts)
+        (_teleported(facts) if shapes and share < 1 else '') + _where(facts) + _wiped(facts)
+
+
+def _where(facts):
+    """Words for the letters read in part of the canvas's ink ('' if in all
+    of it): a frame round them, or another line of writing, left out."""
+    return f' ({facts.where})' if facts.where else ''
 
 
 def _teleported(facts):
@@ -317,7 +326,7 @@ def _accuracy(facts, rubric):
     right = _right(facts) if _letter(facts, rubric)[0] > 0 else []
     if not right:
         return 0.0, f'not scored: {_letter(facts, rubric)[1]}'
-    stray = strays(facts.drawing.strokes)
+    stray = strays(facts.writing or facts.drawing.strokes)     # the ink the letters were read in
     worst = max(stray.wobble, stray.gap / 2)
     share = min(1.0, max(0.0, (rubric.none - worst) / (rubric.none - rubric.full))) * \
         len(right) / max(len(_shapes(facts.readings)), len(facts.expected))

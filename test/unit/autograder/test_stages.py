@@ -124,5 +124,28 @@ def test_read_takes_each_pen_colour_for_a_letter_where_there_are_as_many_as_expe
     green, lavender = (0, 255, 0, 2), (180, 184, 255, 2)
     apart = Drawing(ink, 1.0, 5.0, 90, [], looks=[green] * len(m) + [lavender])
     together = apart._replace(looks=[green] * len(ink))
-    assert [r.letter for r in driver.read(apart, 'MO')[0]] == ['M', 'O']
-    assert [r.letter for r in driver.read(together, 'MO')[0]] != ['M', 'O']
+    assert [r.letter for r in driver.read(apart, 'MO')[0].readings] == ['M', 'O']
+    assert [r.letter for r in driver.read(together, 'MO')[0].readings] != ['M', 'O']
+
+
+def test_letters_read_in_one_line_of_writing_are_graded_there_and_the_row_says_so():
+    """The read and score stages: SNB above 002 inside a border (a real
+    class's snb.py), in pens as the simulator recorded them. The letters
+    are read in the top line; the row says where, and their accuracy is
+    that of SNB drawn alone: neither the border nor the digits count."""
+    from support.glyph_rows import row
+    ink = [[(0.3, 2.2), (10.5, 2.2), (10.5, 9.5), (0.3, 9.5), (0.3, 2.5)]] + \
+        row('SNB', bottom=6.0) + row('002', bottom=3.0)
+    looks = [(255, 0, 255, 3)] + [(80, 80, 200, 3)] * (len(ink) - 1)
+    page = Drawing(ink, 1.0, 40.0, 900, [], looks=looks)
+    alone = Drawing(row('SNB', bottom=6.0), 1.0, 40.0, 900, [], looks=looks[:len(row('SNB'))])
+    marks = {}
+    for name, drawing in (('page', page), ('alone', alone)):
+        facts = rubrics.Facts.observed('SNB', run_of(name), drawing,
+                                       *driver.read(drawing, 'SNB'))
+        marks[name] = {m.name: m for m in rubrics.grade(facts, RUBRIC).tests}
+    letter, accuracy = 'The letter drawn is the expected one', 'Its accuracy'
+    assert marks['page'][letter].output == \
+        'drew SNB, as expected (read in the top line of the 2 lines of its writing)'
+    assert marks['alone'][letter].output == 'drew SNB, as expected'
+    assert marks['page'][accuracy] == marks['alone'][accuracy]

@@ -1,0 +1,146 @@
+"""Where the letters are on a canvas, as a TA finds them at a glance:
+each in a pen colour of its own where the ink comes in as many colours
+as letters expected, else the ink as a row; and where that does not read
+them, the writing without a frame drawn round it, and the top line of
+writing of several, one above another (a real class's SNB above 002,
+inside a border). Only the top line: a canvas is not searched for the
+letters hoped for, or a student who wrote every letter, a line each,
+would earn any. No ROS here.
+"""
+from typing import List, NamedTuple
+
+import numpy
+
+from .ink import box, samples
+from .recognition import Reading
+from .rows import in_colours, read_row, without_specks
+
+EDGE = 0.05         # share of the ink's larger side within which a frame's points lie of its box
+ON_EDGE = 0.9       # share of a line's length that lies so: it runs along the box's edges
+FRAMED = 0.75       # share of each side of the box a frame's lines run along, at least
+LINE_GAP = 0.15     # clear space between two lines of writing, share of the taller one's height
+# The top line of writing stands at least this share as high as the tallest: a piece
+# of a letter above the rest is none (a gothic K tilted 25 degrees, its flourish a sixth
+# of its height, was a line of its own, read as a T).
+TOP_LINE = 0.5
+
+
+class Writing(NamedTuple):
+    """Ink read for the letters expected: its lines, each line's look (colour, width)."""
+    ink: list
+    looks: list
+
+
+class Page(NamedTuple):
+    """The letters read on a canvas, and the writing they were read in."""
+    readings: List[Reading]
+    writing: Writing
+    where: str          # '' for the canvas whole, else which of its writing was read
+
+
+def read_page(ink, looks, expected) -> Page:
+    """The readings of the letters `expected` in `ink` (its lines' `looks`,
+    as the simulator recorded them, or none): the canvas whole (_read);
+    where that does not read them all, the writing without a frame round it,
+    then its top line of writing (writing_on), the first reading the most
+    letters in place kept, where it reads more than the canvas whole."""
+    page = Page(_read(ink, looks, expected), Writing(ink, looks), '')
+    if _in_place(page.readings, expected) == len(expected):
+        return page
+    for where, writing in writing_on(ink, looks):
+        readings = _read(writing.ink, writing.looks, expected)
+        if _in_place(readings, expected) > _in_place(page.readings, expected):
+            page = Page(readings, writing, where)
+        if _in_place(page.readings, expected) == len(expected):
+            break
+    return page
+
+
+def _read(ink, looks, expected):
+    """A letter in each pen colour read alone where the ink comes in as
+    many colours as letters expected (rows.in_colours), else the row."""
+    letters = in_colours(ink, looks, len(expected))
+    if letters:
+        return [read_row(part, letter)[0] for part, letter in zip(letters, expected)]
+    return read_row(ink, expected)
+
+
+def _in_place(readings, expected):
+    return sum(r.letter == e for r, e in zip(readings, expected))
+
+
+def writing_on(ink, looks):
+    """(where, Writing) of what a TA reads on a canvas other than all of
+    it: the ink less a frame round the rest (framed), then, where the rest
+    stands in several lines of writing one above another (lines), the top
+    line alone. Nothing where there is neither."""
+    every = _kept(ink)
+    frame = framed(ink, every)
+    kept = [i for i in every if i not in frame]
+    found = [('read inside the frame drawn round it', kept)] if frame else []
+    bands = lines(ink, kept)
+    if len(bands) > 1 and _height(ink, bands[0]) >= TOP_LINE * max(_height(ink, b) for b in bands):
+        found.append((f'read in the top line of the {len(bands)} lines of its writing', bands[0]))
+    return [(where, Writing([ink[i] for i in sorted(chosen)],     # in the order drawn
+                            [looks[i] for i in sorted(chosen)] if len(looks) == len(ink) else []))
+            for where, chosen in found]
+
+
+def _height(ink, chosen):
+    return box([p for i in chosen for p in ink[i]])[3]
+
+
+def _kept(ink):
+    """Indices of `ink`'s lines that are no speck nor dot (rows.without_specks)."""
+    kept = {id(line) for line in without_specks(ink)}
+    return [i for i, line in enumerate(ink) if id(line) in kept]
+
+
+def framed(ink, kept):
+    """Indices of `ink`'s lines `kept` (indices) that frame the rest: lines
+    running along the ink's box (ON_EDGE of their length within EDGE of its
+    larger side of an edge) and along FRAMED of each of its four sides at
+    least, round other ink that keeps EDGE clear of every edge. (An L's stem
+    and foot run along its box, with nothing inside; an E's bars too, but its
+    middle bar meets its stem.)"""
+    if len(kept) < 2:
+        return []
+    x, y, w, h = box([p for i in kept for p in ink[i]])
+    near = EDGE * max(w, h)
+    points = {i: numpy.array(samples([ink[i]], near / 2)) for i in kept}
+    edges = [i for i in kept if numpy.mean(_off_edges(points[i], x, y, w, h) <= near) >= ON_EDGE]
+    inside = [p for i in kept if i not in edges for p in ink[i]]
+    if not inside or not edges:
+        return []
+    ix, iy, iw, ih = box(inside)
+    if min(ix - x, x + w - ix - iw, iy - y, y + h - iy - ih) <= near:
+        return []
+    along = numpy.concatenate([points[i] for i in edges])
+    sides = [(along[:, 1] - y, along[:, 0], x, w), (y + h - along[:, 1], along[:, 0], x, w),
+             (along[:, 0] - x, along[:, 1], y, h), (x + w - along[:, 0], along[:, 1], y, h)]
+    covered = [numpy.ptp(run[off <= near]) if numpy.any(off <= near) else 0.0
+               for off, run, _, _ in sides]
+    return edges if all(c >= FRAMED * size for c, (_, _, _, size) in zip(covered, sides)) else []
+
+
+def _off_edges(points, x, y, w, h):
+    """How far each of `points` lies from the nearest edge of the box (x, y, w, h)."""
+    return numpy.minimum.reduce([points[:, 0] - x, x + w - points[:, 0],
+                                 points[:, 1] - y, y + h - points[:, 1]])
+
+
+def lines(ink, kept):
+    """The lines of writing of `ink`'s lines `kept` (indices), top first:
+    lines whose heights overlap, or lie less than LINE_GAP of the taller's
+    height apart, are one line of writing's."""
+    spans = sorted(((min(p[1] for p in ink[i]), max(p[1] for p in ink[i]), i)
+                    for i in kept if ink[i]), reverse=True, key=lambda s: s[1])
+    bands = []      # [bottom, top, indices]
+    for bottom, top, i in spans:
+        if bands:
+            low, high, members = bands[-1]
+            if top >= low - LINE_GAP * max(high - low, top - bottom):
+                bands[-1] = [min(low, bottom), high, members + [i]]
+                continue
+        bands.append([bottom, top, [i]])
+    return [members for _, _, members in bands]

@@ -1,0 +1,97 @@
+"""Where the letters are on a canvas (reading/page.py): read past a frame
+drawn round them and past another line of writing, as a TA reads them,
+and nothing read there that is not drawn. The ink is the builtin font's,
+placed by the tests' own helpers."""
+import pytest
+
+from support.glyph_rows import row
+from turtle_letters.reading.page import read_page, writing_on
+
+
+def frame(left, bottom, right, top, gap=0.3):
+    """A border driven round the writing as one line, its last side stopping `gap` short."""
+    return [[(left, bottom), (right, bottom), (right, top), (left, top), (left, bottom + gap)]]
+
+
+def framed_page(top_text='SNB', bottom_text='002', border=True):
+    """`top_text` above `bottom_text` (each 2 m high, 1 m apart), a border round both."""
+    ink = row(top_text, bottom=6.0) + (row(bottom_text, bottom=3.0) if bottom_text else [])
+    return (frame(0.3, 2.2, 10.5, 9.5) if border else []) + ink
+
+
+def letters(page):
+    return ''.join(r.letter or '?' for r in page.readings)
+
+
+@pytest.mark.parametrize('border', [True, False])
+def test_letters_above_a_line_of_digits_read_in_their_line(border):
+    """SNB above 002, framed or not (a real class's snb.py): as one row
+    nothing reads; its top line of writing reads SNB, and the row says where."""
+    page = read_page(framed_page(border=border), [], 'SNB')
+    assert letters(page) == 'SNB'
+    assert page.where == 'read in the top line of the 2 lines of its writing'
+    assert len(page.writing.ink) == len(row('SNB'))
+
+
+def test_letters_inside_a_frame_read_inside_it():
+    page = read_page(framed_page(bottom_text=''), [], 'SNB')
+    assert letters(page) == 'SNB'
+    assert page.where == 'read inside the frame drawn round it'
+
+
+@pytest.mark.parametrize('bottom_text, expected, credited', [
+    ('002', 'SNE', 'SN?'), ('002', 'XYZ', '???'), ('002', 'NBS', '???'), ('LIT', 'LIT', '???')])
+def test_only_letters_in_their_places_in_the_top_line_are_credited(bottom_text, expected,
+                                                                 credited):
+    """Graded against letters the page does not draw in their places in
+    its top line, none of them is credited: the letters drawn read as
+    themselves or not at all, and a lower line is never searched (a
+    student who wrote every letter, a line each, would earn any)."""
+    page = read_page(framed_page(bottom_text=bottom_text), [], expected)
+    assert ''.join(r.letter if r.letter == e else '?'
+                   for r, e in zip(page.readings, expected)) == credited
+
+
+def test_each_line_is_read_in_its_pen_colours():
+    """Each letter of the top line in its own colour, the border and the
+    digits in others: the line's three colours are its three letters."""
+    pink, grey = (255, 0, 255, 3), (128, 128, 128, 3)
+    own = [look for look, letter in zip([(200, 0, 0, 3), (0, 200, 0, 3), (0, 0, 200, 3)], 'SNB')
+           for _ in row(letter)]
+    page = read_page(framed_page(), [pink] + own + [grey] * len(row('002')), 'SNB')
+    assert letters(page) == 'SNB' and page.writing.looks == own
+
+
+@pytest.mark.parametrize('text', ['L', 'E', 'H', 'O', 'LE', 'SNB', 'U'])
+def test_a_letter_along_its_own_box_is_no_frame_and_one_line_no_lines(text):
+    """An L's stem and foot, an E's bars, a square O run along the ink's
+    box, but nothing lies inside them clear of every edge: no frame; a
+    row of letters is one line of writing."""
+    assert writing_on(row(text), []) == []
+
+
+def test_a_square_o_round_a_letter_is_a_frame_and_a_ring_is_not():
+    """Ink round the rest, along its box, is a frame (a letter in a box);
+    a ring round it is a letter's, an O's, and stays."""
+    import math
+    inside = row('I', bottom=3.0, left=3.0)
+    ring = [[(3.2 + 2.5 * math.cos(a / 20 * math.tau), 4.0 + 2.5 * math.sin(a / 20 * math.tau))
+             for a in range(21)]]
+    assert [where for where, _ in writing_on(frame(0.0, 0.0, 6.5, 8.0) + inside, [])] == \
+        ['read inside the frame drawn round it']
+    assert writing_on(ring + inside, []) == []
+
+
+def test_a_piece_of_a_letter_above_the_rest_is_no_line_of_writing():
+    """A gothic K half as wide again, tilted 25 degrees, has its flourish
+    clear above the rest: a sixth of its height, no line of writing (read
+    as one, it was a T, and a K graded against T earned it)."""
+    import string
+    from support.glyph_rows import touching
+    from turtle_letters.reading.ink import box, turned
+    ink = touching('gothiceng', 'K', aspect=1.5)
+    x, y, w, h = box([p for line in ink for p in line])
+    ink = turned(ink, -25, (x + w / 2, y + h / 2))
+    assert writing_on(ink, []) == []
+    assert [c for c in string.ascii_uppercase if read_page(ink, [], c).readings[0].letter == c] \
+        == ['K']
