@@ -116,11 +116,12 @@ def framed(ink, kept):
     if min(ix - x, x + w - ix - iw, iy - y, y + h - iy - ih) <= near:
         return []
     along = numpy.concatenate([points[i] for i in edges])
-    sides = [(along[:, 1] - y, along[:, 0], x, w), (y + h - along[:, 1], along[:, 0], x, w),
-             (along[:, 0] - x, along[:, 1], y, h), (x + w - along[:, 0], along[:, 1], y, h)]
-    covered = [numpy.ptp(run[off <= near]) if numpy.any(off <= near) else 0.0
-               for off, run, _, _ in sides]
-    return edges if all(c >= FRAMED * size for c, (_, _, _, size) in zip(covered, sides)) else []
+    # each side: how far the frame's points lie off it, where they lie along it, its length
+    sides = [(along[:, 1] - y, along[:, 0], w), (y + h - along[:, 1], along[:, 0], w),
+             (along[:, 0] - x, along[:, 1], h), (x + w - along[:, 0], along[:, 1], h)]
+    covered = all(numpy.any(off <= near) and numpy.ptp(run[off <= near]) >= FRAMED * size
+                  for off, run, size in sides)
+    return edges if covered else []
 
 
 def _off_edges(points, x, y, w, h):
