@@ -9,7 +9,8 @@ sibling package that cannot build here, and a Python package whose
 CMakeLists.txt names another project, and a package whose launch file
 starts turtlesim alone, its letter a shell script without #! that its
 course runs with bash, and one whose controller its launch file starts in
-a terminal this machine lacks (terminator).
+a terminal this machine lacks (terminator), and one whose controller was
+written on Windows (its #! line ends in a carriage return).
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -91,6 +92,9 @@ CONCLUSIONS = {
     'o11_prefixed': ('L', 'pass', "error while attempting to run: terminator -x "
                                   "lab1/scripts/l_controller.py; the grader ran its "
                                   "executables instead (keys.py, l_controller.py)"),
+    'o12_windows': ('L', 'pass', 'the grader ran its executables instead (keys.py, '
+                                 'l_controller.py), as a TA would; l_controller.py: no #! line '
+                                 'exec can follow'),
 }
 
 
@@ -99,7 +103,7 @@ def graded(tmp_path_factory):
     top = tmp_path_factory.mktemp('odd')
     cls, out = str(top / 'class'), str(top / 'out')
     for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim', 'o8_unbuilt',
-                 'o11_prefixed'):
+                 'o11_prefixed', 'o12_windows'):
         shutil.copytree(LENA, os.path.join(cls, name))
     nest(os.path.join(cls, 'o1_deep', 'lab1'), 1100)
     os.mkfifo(os.path.join(cls, 'o3_fifo', 'lab1', 'scripts', 'pipe'))
@@ -121,6 +125,11 @@ def graded(tmp_path_factory):
                                 'name="l_controller" launch-prefix="terminator -x"/>')
     with open(launch, 'w') as f:
         f.write(text)
+    controller = os.path.join(cls, 'o12_windows', 'lab1', 'scripts', 'l_controller.py')
+    with open(controller, newline='') as f:
+        text = f.read()
+    with open(controller, 'w', newline='') as f:  # each line ending in CR LF
+        f.write(text.replace('\n', '\r\n'))
     shutil.copytree(PRINTER, os.path.join(cls, 'h7_printer'))
     shutil.copytree(NOAH, os.path.join(cls, 'o6_three'))
     spin = os.path.join(cls, 'o6_three', 'noah_ws', 'src', 'lab_one', 'scripts', 'spin_forever.py')
@@ -144,7 +153,7 @@ def graded(tmp_path_factory):
         with open(path, 'w') as f:
             f.write(text)
         os.chmod(path, 0o644)
-    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11')   # Müller (o2): no roster
+    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12')  # Müller: no roster
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +

@@ -21,12 +21,14 @@ from .failures import RLEXCEPTION, talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, Reader, RunningScripts
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
-                         python_scripts, scripts, started_packages, wrap)
+                         nodes, python_scripts, scripts, started_packages, unstartable_python,
+                         wrap)
 from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
                     terminal_stand_ins)
 
 POLL = 0.1                  # s between looks at what the watcher saw
 BASH = ' launch-prefix="bash"'  # a shell script without #! is run with bash, as a TA types it
+PYTHON = ' launch-prefix="python3"'     # ... and a Python script exec cannot start, with python3
 REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch file it cannot start
 NO_TURTLESIM = 'its launch file does not start turtlesim'   # nor does the grader's, by design
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
@@ -55,6 +57,7 @@ class Run:
         self.limit = ''         # the sandbox's limit the submission reached, in words
         self.generated = ''     # the executables the grader started, for want of a launch file
         self.executables = []   # ... each by name
+        self.unstartable = []   # ... those exec could not start (no usable #!): run with python3
         self.passed_over = None  # why the package's launch file was not run, if it was not
         self.fell_short = ''    # '; why': the lab of the executables the grader started fell short
         self.log = []           # (title, lines)
@@ -182,7 +185,7 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     if not result.build.ok:
         return _unbuilt(box, limits, result)
     _launch_and_watch(box, limits, result)
-    if _refused(result) and box.going():
+    if _refused(result, box) and box.going():
         first, refused = result, result.launch.says
         result = Run(package._replace(launch=None))     # a fresh world, the same build
         result.build, result.log = first.build, first.log
@@ -215,12 +218,19 @@ def _unbuilt(box, limits, result):
     return result
 
 
-def _refused(result):
+def _refused(result, box):
     """Whether roslaunch refused to start a node of the package's launch
     file, or ended on its own exception (a launch-prefix of a program the
-    machine lacks, XML it cannot read: failures.roslaunch_exception)."""
-    return bool(result.package.launch) and result.launch is not None and \
-        not result.launch.ok and result.launch.says.startswith((REFUSAL, RLEXCEPTION))
+    machine lacks, XML it cannot read: failures.roslaunch_exception), or the
+    lab failed where the launch file starts a Python script exec cannot
+    start (its #! line ends in a carriage return: env finds no `python3\\r`)."""
+    if not (result.package.launch and result.launch is not None and not result.launch.ok):
+        return False
+    copied = _copied(box, result.package)
+    started = {kind for _, kind in nodes(os.path.join(copied, result.package.launch),
+                                         {result.package.name: copied})}
+    return result.launch.says.startswith((REFUSAL, RLEXCEPTION)) or \
+        bool(started & set(unstartable_python(copied)))
 
 
 def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
@@ -258,12 +268,15 @@ def _copied(box, package):
 def generated_launch(box, package, names):
     """The launch file the grader writes where a package has none that
     starts its nodes: each executable of `names` started as rosrun would,
-    all in roslaunch's terminal (a shell script without #!, with bash). Its
-    path. (The grader runs turtlesim itself: a launch file of turtlesim and
+    all in roslaunch's terminal (a shell script without #!, with bash; a
+    Python script whose #! exec cannot follow, with python3). Its path.
+    (The grader runs turtlesim itself: a launch file of turtlesim and
     its teleop alone adds nothing, and a real class's failed to parse.)"""
-    shell = set(bare_shell(_copied(box, package)))
+    shell, python = set(bare_shell(_copied(box, package))), set(unstartable_python(
+        _copied(box, package)))
+    prefix = {**{name: BASH for name in shell}, **{name: PYTHON for name in python}}
     lines = [f'  <node pkg={quoteattr(package.name)} type={quoteattr(name)} '
-             f'name="{_node(name, i)}" output="screen"{BASH if name in shell else ""}/>\n'
+             f'name="{_node(name, i)}" output="screen"{prefix.get(name, "")}/>\n'
              for i, name in enumerate(names)]
     # a name of its own: the submission's build could have left a link anywhere in `work`
     fd, path = tempfile.mkstemp(prefix='grader_', suffix='.launch', dir=box.work)
@@ -298,6 +311,7 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
     else:
         launch = [generated_launch(box, package, names)]
         result.executables, result.generated = names, ', '.join(names) or 'none'
+        result.unstartable = sorted(set(names) & set(unstartable_python(_copied(box, package))))
         result.passed_over = package.launch and (f'{package.launch} starts nodes of '
                                                  f'{", ".join(started) or "no package"} only, '
                                                  f'none of {package.name}')
@@ -326,18 +340,30 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
 
 
 def started_instead(run):
-    """('; why the lab fell short' or '', the launch step) of a `run` of the
-    executables the grader started for want of a launch file that starts
-    them: how it came to, and what the lab said where it did not come up (a
-    node that died is the student's to mend, whoever started it). The
-    launch file the grader writes starts no turtlesim: the grader runs its own."""
+    """('; what was done and why the lab fell short' or '', the launch step)
+    of a `run` of the executables the grader started for want of a launch
+    file that starts them: how it came to, the scripts run with python3
+    (_with_python), and what the lab said where it did not come up (a node
+    that died is the student's to mend, whoever started it). The launch
+    file the grader writes starts no turtlesim: the grader runs its own."""
     fell_short = '' if run.launch.ok or run.launch.says == NO_TURTLESIM else \
         f'; {run.launch.says}'
+    fell_short = _with_python(run.unstartable) + fell_short
     how = (f'{run.passed_over}: the grader started its executables ({run.generated}) instead, '
            f'as a TA would' if run.passed_over else
            f'no launch file: the grader started its executables ({run.generated}) as a launch '
            f'file would')
     return fell_short, Step(False, how + fell_short)
+
+
+def _with_python(names):
+    """'; words' for the Python scripts that exec could not start, run with python3, or ''."""
+    if not names:
+        return ''
+    them = 'them' if len(names) > 1 else 'it'
+    return (f'; {", ".join(names)}: no #! line exec can follow (a path from /, its line '
+            f'ending without a carriage return: #!/usr/bin/env python3), so rosrun cannot '
+            f'start {them}: the grader ran {them} with python3, as a TA would')
 
 
 class Refused:

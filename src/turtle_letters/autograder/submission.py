@@ -327,6 +327,22 @@ def bare_shell(folder, depth=3):
                   if entry.name.endswith('.sh') and not _starts_with_shebang(entry.path))
 
 
+def unstartable_python(folder, depth=3):
+    """The names of the executable .py files in a package's folders that
+    exec cannot start as handed in: no #! line, or one that names no program
+    by its path (`#!usr/bin/env python`, or a line ending in a carriage
+    return, written on Windows). A TA runs them with python3."""
+    files = _executable(_plain_files(folder, depth, lambda found: False))
+    return sorted(entry.name for entry in files
+                  if entry.name.endswith('.py') and not _startable(entry.path))[:MAX_NODES]
+
+
+def _startable(path):
+    """Whether a script's first line is a #! that exec can follow: a path from /, no CR."""
+    first = (read_plain(path, 200) or b'').split(b'\n')[0]
+    return re.match(rb'#!\s*/', first) is not None and not first.endswith(b'\r')
+
+
 def _starts_with_shebang(path):
     try:
         with open(path, 'rb') as f:

@@ -142,6 +142,45 @@ def test_a_shell_script_without_its_bang_is_started_with_bash(tmp_path):
     assert 'type="letters.sh" name="letters0" output="screen" launch-prefix="bash"/>' in text
 
 
+# Scripts handed in executable that exec cannot start, as real classes wrote them,
+# and one it can: started for want of a launch file, each as a TA would run it.
+UNSTARTABLE = {'scripts/spawn.py': 'import rospy\n',                     # no #! line at all
+               'scripts/topic.py': '#!usr/bin/env python\nimport rospy\n',    # no leading /
+               'scripts/windows.py': '#!/usr/bin/env python3\r\nimport rospy\r\n',  # CR LF
+               'scripts/sound.py': '#! /usr/bin/env python3\nimport rospy\n'}
+
+
+def test_a_python_script_exec_cannot_start_is_started_with_python3(tmp_path):
+    """A real class's scripts: one without a #! line and one whose #! names
+    no path died in roslaunch ("Unable to launch", "No such file or
+    directory"); a #! line that ends in a carriage return fails so too. The
+    grader's launch file starts each with python3; a sound one, as it is. A
+    module handed in mode 644 without #! is no program: it is not started."""
+    package, box, _ = handed_in(tmp_path, 'lab', {**UNSTARTABLE, 'src/lab/shapes.py': 'N = 1\n'})
+    for path in UNSTARTABLE:
+        os.chmod(os.path.join(box.work, 'ws', 'src', 'lab', path), 0o755)
+    names = executables(box, package)
+    assert names == ['sound.py', 'spawn.py', 'topic.py', 'windows.py']
+    text = open(generated_launch(box, package, names)).read()
+    for name in ('spawn', 'topic', 'windows'):
+        assert f'type="{name}.py" name="{name}' in text and \
+            f'name="{name}{names.index(name + ".py")}" output="screen" ' \
+            f'launch-prefix="python3"/>' in text, text
+    assert 'name="sound0" output="screen"/>' in text, text
+
+
+def test_the_scripts_run_with_python3_are_named_in_the_row_with_why():
+    run = Run(None)
+    run.generated, run.unstartable = 'keys.py, spawn.py', ['spawn.py']
+    run.launch = Step(True, 'turtlesim up, /keys0 listening on /chatter, in 2.0 s')
+    fell_short, step = started_instead(run)
+    assert fell_short == '; spawn.py: no #! line exec can follow (a path from /, its line ' \
+                         'ending without a carriage return: #!/usr/bin/env python3), so ' \
+                         'rosrun cannot start it: the grader ran it with python3, as a TA would'
+    assert step.says == 'no launch file: the grader started its executables (keys.py, ' \
+                        'spawn.py) as a launch file would' + fell_short
+
+
 def test_a_launch_roslaunch_refused_a_node_of_is_waited_for_only_a_while_after():
     """roslaunch's refusal, in a terminal's output among its other lines
     (and in the part kept of a long one), starts the others' time."""
