@@ -10,7 +10,8 @@ CMakeLists.txt names another project, and a package whose launch file
 starts turtlesim alone, its letter a shell script without #! that its
 course runs with bash, and one whose controller its launch file starts in
 a terminal this machine lacks (terminator), and one whose controller was
-written on Windows (its #! line ends in a carriage return).
+written on Windows (its #! line ends in a carriage return), and one that
+asks at a prompt which letter to draw, as another course's lab does.
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -67,6 +68,25 @@ BY_HAND = {'package.xml': '<package format="2"><name>hw3</name><version>0.0.1</v
                                  "'[0.0, 0.0, 0.0]' '[0.0, 0.0, 1.5708]'\n"
                                  "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
                                  "'[2.0, 0.0, 0.0]' '[0.0, 0.0, 0.0]'\n"}
+# Another course's lab: no talker, the script asks which letter to draw,
+# as a real class's did ("enter a letter (A,B)"), and draws an L if told L.
+ASKS = {'package.xml': BY_HAND['package.xml'].replace('hw3', 'asks'),
+        'CMakeLists.txt': BY_HAND['CMakeLists.txt'].replace('hw3', 'asks'),
+        'scripts/asks.py': '#!/usr/bin/env python3\n'
+                           'import rospy\n'
+                           'from geometry_msgs.msg import Twist\n'
+                           "rospy.init_node('asks')\n"
+                           "cmd = rospy.Publisher('turtle1/cmd_vel', Twist, queue_size=1)\n"
+                           'while not rospy.is_shutdown():\n'
+                           "    if input('a letter to draw (L): ').strip() != 'L':\n"
+                           "        print('no such letter')\n"
+                           '        continue\n'
+                           '    for x, z in ((0.0, -1.5708), (2.5, 0.0), (0.0, 1.5708), '
+                           '(1.5, 0.0)):\n'
+                           '        move = Twist()\n'
+                           '        move.linear.x, move.angular.z = x, z\n'
+                           '        cmd.publish(move)\n'
+                           '        rospy.sleep(1.5)\n'}
 PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
 RUBRIC = os.path.join(HERE, 'rubric.yaml')
 NOAHS = ('o6_three', 'o10_turning')          # Noah's package, its scripts changed
@@ -95,6 +115,7 @@ CONCLUSIONS = {
     'o12_windows': ('L', 'pass', 'the grader ran its executables instead (keys.py, '
                                  'l_controller.py), as a TA would; l_controller.py: no #! line '
                                  'exec can follow'),
+    'o13_asks': ('L', 'pass', 'no launch file: the grader started its executables (asks.py)'),
 }
 
 
@@ -147,13 +168,14 @@ def graded(tmp_path_factory):
         os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
         with open(os.path.join(cls, 'o7_siblings', 'gazebo_world', name), 'w') as f:
             f.write(text)
-    for name, text in BY_HAND.items():
-        path = os.path.join(cls, 'o9_by_hand', 'hw3', name)
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        with open(path, 'w') as f:
-            f.write(text)
-        os.chmod(path, 0o644)
-    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12')  # Müller: no roster
+    for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS)):
+        for name, text in files.items():
+            path = os.path.join(cls, folder, name)
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            with open(path, 'w') as f:
+                f.write(text)
+            os.chmod(path, 0o755 if name == 'scripts/asks.py' else 0o644)
+    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13')  # not o2
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +
@@ -190,6 +212,18 @@ def test_a_script_that_ends_with_its_last_move_is_seen_to_stand(graded):
         tests = {t['name']: t for t in json.load(f)['tests']}
     ends = tests['The drawing ends, the turtle standing still']
     assert ends['status'] == 'passed' and ends['output'].startswith('ended after'), ends
+
+
+def test_a_prompt_that_asks_for_the_letter_is_typed_it_and_the_row_says_so(graded):
+    """o13 asks at a prompt which letter to draw: P earns nothing there, so
+    the roster's L is typed, and it is drawn; only `talker` is lost for it."""
+    with open(os.path.join(graded[0], 'o13_asks', 'results.json')) as f:
+        tests = {t['name']: t for t in json.load(f)['tests']}
+    talker = tests['The talker publishes P on a key press']
+    assert talker['status'] == 'failed' and talker['output'] == (
+        "nothing on /chatter within 5 s of P and Enter; a node waited for a line on the "
+        "terminal ('a letter to draw (L):'): the grader typed L and Enter, as a TA would"), talker
+    assert tests['The letter drawn is the expected one']['output'] == 'drew L, as expected'
 
 
 def test_what_was_left_out_is_said_in_the_students_log(graded):

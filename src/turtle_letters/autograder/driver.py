@@ -88,7 +88,7 @@ def _facts(student, rubric, place):
     if package.problem:
         return rubrics.Facts.never_ran(student.expected, package.problem), None, package.notes
     with place.sandbox() as box:
-        run = session.run(package, rubric.limits, box)                      # run
+        run = session.run(package, rubric.limits, box, student.expected)    # run
         facts = observed(student.expected, run, rubric)                     # observe, read
         facts, run = each_alone(student.expected, rubric, box, facts, run)  # alone
     if box.stopped:

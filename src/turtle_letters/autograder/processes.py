@@ -3,6 +3,7 @@ print, kept within bounds, and through /proc the controller's CPU while it
 drew."""
 import json
 import os
+import platform
 import select
 import threading
 import time
@@ -11,6 +12,7 @@ from ..grading.procstat import cpu_seconds, stat_fields
 from . import observations as seen
 
 SHELLS = ('bash', 'sh', 'dash')
+READ = {'x86_64': '0', 'aarch64': '63'}.get(platform.machine())    # read(2)'s number here
 
 
 def controller_processes(root, node):
@@ -28,6 +30,33 @@ def script_nodes(root, folder):
             if os.path.basename(args[0]).decode(errors='replace') in SHELLS
             and len(args) > 1 and args[1].startswith(inside)
             and any(arg.startswith(b'__name:=') for arg in args) and _descends(pid, root)]
+
+
+def reading_input(root):
+    """Whether a node under `root` (roslaunch) waits in read(2) on its
+    standard input, the terminal, in any of its threads (a prompt's
+    input(), a talker's key)."""
+    for pid, args in _commands():
+        if any(arg.startswith(b'__name:=') for arg in args) and _descends(pid, root) and \
+                any(_reads_stdin(f'/proc/{pid}/task/{task}') for task in _tasks(pid)):
+            return True
+    return False
+
+
+def _tasks(pid):
+    try:
+        return os.listdir(f'/proc/{pid}/task')
+    except OSError:
+        return []
+
+
+def _reads_stdin(task):
+    """Whether the thread at /proc path `task` is in read(2) of file 0."""
+    try:
+        with open(f'{task}/syscall') as f:
+            return f.read().split()[:2] == [READ, '0x0']
+    except OSError:     # gone, or not ours to look at
+        return False
 
 
 def _commands():

@@ -18,7 +18,7 @@ from xml.sax.saxutils import quoteattr
 from ..isolation.sandbox import GiB, Caps, Sandbox
 from . import observations as seen
 from .failures import RLEXCEPTION, talker_failure, why_not_launched, why_still
-from .processes import ControllerCpu, Reader, RunningScripts
+from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
                          nodes, python_scripts, scripts, started_packages, unstartable_python,
@@ -45,7 +45,7 @@ class Step(NamedTuple):
 class Run:
     """What happened to one submission, step by step (None: not reached)."""
 
-    def __init__(self, package: Package):
+    def __init__(self, package: Package, letters=''):
         self.package = package
         self.build = self.launch = self.waited = self.talker = None
         self.events, self.trigger, self.cpu_pct = [], None, None
@@ -58,6 +58,7 @@ class Run:
         self.generated = ''     # the executables the grader started, for want of a launch file
         self.executables = []   # ... each by name
         self.unstartable = []   # ... those exec could not start (no usable #!): run with python3
+        self.letters = letters  # the roster's: typed where P drew nothing and a prompt waits
         self.passed_over = None  # why the package's launch file was not run, if it was not
         self.fell_short = ''    # '; why': the lab of the executables the grader started fell short
         self.log = []           # (title, lines)
@@ -164,7 +165,7 @@ def wait_until(condition, seconds, alive=lambda: True):
     return bool(condition())
 
 
-def run(package: Package, limits: Limits, box: Sandbox) -> Run:
+def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
     """Copy, build, launch, type P, watch: the whole run of one submission,
     in `box`; with a TA's fallbacks, each costing `launches` alone and said
     there: scripts handed in without the execute bit run all the same, and
@@ -172,8 +173,9 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     launch-prefix of a program the machine lacks) gives way to the
     package's executables, started as without a launch file.
     Scripts handed in without a package.xml are wrapped in one and run,
-    costing `builds` alone."""
-    result = Run(package)
+    costing `builds` alone. A prompt that waits for a line where P drew
+    nothing is typed the roster's `letters` (_typed_letters)."""
+    result = Run(package, letters)
     made = prepare(package, box.work)
     stand_in(box.work)
     box.hand_over()
@@ -187,7 +189,7 @@ def run(package: Package, limits: Limits, box: Sandbox) -> Run:
     _launch_and_watch(box, limits, result)
     if _refused(result, box) and box.going():
         first, refused = result, result.launch.says
-        result = Run(package._replace(launch=None))     # a fresh world, the same build
+        result = Run(package._replace(launch=None), letters)     # a fresh world, the same build
         result.build, result.log = first.build, first.log
         _launch_and_watch(box, limits, result)
         result.launch = Step(False, f'{refused}; the grader ran its executables instead '
@@ -237,7 +239,7 @@ def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
     """A TA's next try where a package's executables, started together,
     drew nothing worth its letter (they fought over one turtle): `name`
     alone, in a fresh world, on the same build."""
-    result = Run(first.package._replace(launch=None))
+    result = Run(first.package._replace(launch=None), first.letters)
     result.build, result.log = first.build, list(first.log)
     _launch_and_watch(box, limits, result, only=name)
     if result.launch is not None:
@@ -380,19 +382,23 @@ class Refused:
 
 
 def _watch(lab, limits, result):
-    """Launched at `started`: up once a node listens on /chatter or a turtle
-    moves; P typed after the turtle stood for limits.stand; the drawing
-    watched from the launch (a turtle that did not wait) or the trigger."""
+    """Launched at `started`: up once a node listens on /chatter, a turtle
+    moves or a prompt waits for a line (_prompting); P typed after the
+    turtle stood for limits.stand; the drawing watched from the launch (a
+    turtle that did not wait), the trigger, or the letters typed at a
+    prompt (_typed_letters)."""
     terminal, watcher, alive = lab.terminal, lab.watcher, lab.going
     events, record = watcher.events, lab.world.events
     started = time.monotonic()
     refused = Refused(terminal.output, limits.start)
-    if not wait_until(lambda: _listening(events) or seen.moved(record, started),
-                      limits.launch, lambda: alive() and not refused.waited_out()):
+    if not wait_until(lambda: _listening(events) or seen.moved(record, started) or
+                      _prompting(terminal), limits.launch,
+                      lambda: alive() and not refused.waited_out()):
         result.launch = Step(False, 'the lab did not come up')
         return
     up = time.monotonic()
-    result.launch = _launched(events, os.path.join(terminal.box.work, 'stand_in'), up - started)
+    result.launch = _launched(events, os.path.join(terminal.box.work, 'stand_in'), up - started,
+                              seen.moved(record, started))
     wait_until(lambda: False, limits.stand, alive)
     result.waited = _waited(record, started, limits.stand)
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
@@ -417,7 +423,9 @@ def _watch(lab, limits, result):
                 f'({seen.WATCHER}) was shut down (a node took its name, or shut it down)'))
         wait_until(lambda: seen.trigger(events, typed, by_grader=True) is not None, 5.0)
         result.trigger = seen.trigger(events, typed, by_grader=True) or time.monotonic()
-    since = result.since = seen.looked_for_from(record, started, result.trigger)
+    asked = _typed_letters(lab, limits, result, typed, shown)
+    result.trigger = asked or result.trigger
+    since = result.since = asked or seen.looked_for_from(record, started, result.trigger)
     result.limit_s = limits.drawing
     if wait_until(lambda: seen.moved(record, since), limits.start, alive):
         wait_until(lambda: _stood(record, since, limits.settle, scripts), limits.drawing, alive)
@@ -429,6 +437,35 @@ def _watch(lab, limits, result):
     else:
         result.still_from = shown
     result.cpu_pct, result.script_until = cpu.share(), scripts.until
+
+
+def _typed_letters(lab, limits, result, typed, shown):
+    """A TA's fallback where no talker answered P and no turtle moved since:
+    a node waits for a line on the terminal (a prompt's input(), the
+    terminal in line mode), so the roster's letters are typed, and Enter,
+    as the prompt asks (a real class's "enter a letter (A,B)"). When they
+    were typed, where a turtle moved within limits.start of it (the drawing
+    is looked for from then), else None (one drawn at the launch stands)."""
+    terminal, record = lab.terminal, lab.world.events
+    if result.talker.ok or not result.letters or seen.moved(record, typed) or \
+            not _prompting(terminal):
+        return None
+    prompt = ([line.strip() for line in terminal.text(shown).splitlines() if line.strip()]
+              or [''])[-1][:80]
+    asked = time.monotonic()
+    terminal.type(result.letters.encode() + b'\r')
+    moved = wait_until(lambda: seen.moved(record, asked), limits.start, lab.going)
+    result.talker = result.talker._replace(says=(
+        f'{result.talker.says}; a node waited for a line on the terminal ({prompt!r}): the '
+        f'grader typed {result.letters} and Enter, as a TA would'
+        f'{"" if moved else ", and no turtle moved"}'))
+    return asked if moved else None
+
+
+def _prompting(terminal):
+    """Whether a node waits for a line on the terminal: it reads its input
+    there, and the terminal is in line mode (a talker reads key by key)."""
+    return terminal.in_lines() and reading_input(terminal.process.pid)
 
 
 def _waited(record, started, stand):
@@ -444,15 +481,17 @@ def _listening(events):
     return bool(graph and graph['chatter_subscribers'])
 
 
-def _launched(events, stand_in_folder, seconds):
+def _launched(events, stand_in_folder, seconds, moved):
     """The launch step, once the lab is up: it started turtlesim (the
-    stand-in) and a node that listens on /chatter."""
+    stand-in) and a node that listens on /chatter (else a turtle `moved`,
+    or a node waits for a line on the terminal)."""
     listeners = seen.last_graph(events)['chatter_subscribers'] if seen.last_graph(events) else []
     if not stand_in_started(stand_in_folder):
         return Step(False, NO_TURTLESIM, seconds)
     if not listeners:
-        return Step(False, 'no node subscribed to /chatter: a turtle moved without the trigger',
-                    seconds)
+        return Step(False, 'no node subscribed to /chatter: ' + (
+            'a turtle moved without the trigger' if moved else
+            'a node waits for a line on the terminal'), seconds)
     return Step(True, f'turtlesim up, {", ".join(listeners)} listening on /chatter, in '
                       f'{seconds:.1f} s', seconds)
 

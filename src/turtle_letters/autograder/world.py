@@ -20,6 +20,7 @@ import pty
 import shutil
 import signal
 import subprocess
+import termios
 import threading
 import time
 
@@ -335,6 +336,10 @@ class Terminal:
 
     def type(self, keys):
         os.write(self.master, keys)
+
+    def in_lines(self):
+        """Whether it reads in lines, as input() does (canonical mode), not key by key."""
+        return bool(termios.tcgetattr(self.master)[3] & termios.ICANON)
 
     def text(self, since=0):
         """What the terminal showed (from byte `since` on), as plain lines."""

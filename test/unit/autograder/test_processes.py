@@ -7,7 +7,7 @@ import sys
 import time
 
 from turtle_letters.autograder.processes import (Capped, ControllerCpu, Reader, RunningScripts,
-                                                controller_processes)
+                                                controller_processes, reading_input)
 
 
 def test_the_start_and_end_are_kept_and_the_middle_counted():
@@ -99,3 +99,54 @@ def test_a_shell_script_of_the_submission_is_seen_running_until_it_ends(tmp_path
     finally:
         os.killpg(launch.pid, 9)
         launch.wait()
+
+
+def _until(condition, seconds=10.0):
+    deadline = time.monotonic() + seconds
+    while not condition() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return condition()
+
+
+def test_a_node_waiting_for_a_line_on_its_terminal_is_seen_until_it_has_one():
+    """Started as roslaunch starts nodes (`__name:=`), on a terminal: a node
+    at a prompt (input()) is seen to read its standard input; one that
+    sleeps with a thread at its prompt too; not once it has its line and
+    sleeps."""
+    master, slave = pty.openpty()
+    asks = ('import threading, time\n'
+            'if "--thread" in __import__("sys").argv:\n'
+            '    threading.Thread(target=input, daemon=True).start()\n'
+            'else:\n'
+            '    input("a letter (A, B): ")\n'
+            'time.sleep(60)\n')
+    nodes = [subprocess.Popen([sys.executable, '-c', asks, *more, '__name:=asker'],
+                              stdin=slave, stdout=slave, stderr=slave, start_new_session=True)
+             for more in ([], ['--thread'])]
+    os.close(slave)
+    try:
+        for node in nodes:
+            assert _until(lambda: reading_input(node.pid)), 'its prompt waits'
+        os.write(master, b'A\r')        # read by one of the two
+        assert _until(lambda: sum(reading_input(n.pid) for n in nodes) == 1)
+        os.write(master, b'B\r')
+        assert _until(lambda: not any(reading_input(n.pid) for n in nodes)), 'they sleep'
+    finally:
+        for node in nodes:
+            node.kill()
+            node.wait()
+        os.close(master)
+
+
+def test_a_process_reading_its_input_that_roslaunch_did_not_start_as_a_node_is_none():
+    master, slave = pty.openpty()
+    plain = subprocess.Popen([sys.executable, '-c', 'input()'], stdin=slave, stdout=slave,
+                             start_new_session=True)
+    os.close(slave)
+    try:
+        time.sleep(1.0)
+        assert plain.poll() is None and not reading_input(plain.pid)
+    finally:
+        plain.kill()
+        plain.wait()
+        os.close(master)

@@ -181,6 +181,25 @@ def test_the_scripts_run_with_python3_are_named_in_the_row_with_why():
                         'spawn.py) as a launch file would' + fell_short
 
 
+def test_the_terminal_says_whether_it_reads_in_lines_or_key_by_key():
+    """A prompt's input() reads the terminal in lines; a talker that reads
+    each key sets it key by key (cbreak), as the lab's does."""
+    box = SimpleNamespace(started=lambda process: process)
+    keys = 'import sys, time, tty\ntty.setcbreak(sys.stdin.fileno())\nprint("k")\ntime.sleep(60)\n'
+    for code, in_lines in (('print("k")\ninput()\n', True), (keys, False)):
+        terminal = world.Terminal(['/usr/bin/python3', '-c', code], box)
+        try:
+            deadline = time.monotonic() + 10
+            while b'k' not in terminal.output.text().encode() and time.monotonic() < deadline:
+                time.sleep(0.05)
+            assert terminal.in_lines() is in_lines, code
+        finally:
+            terminal.process.kill()
+            terminal.process.wait()
+            os.close(terminal.master)
+            terminal.reader.stop()
+
+
 def test_a_launch_roslaunch_refused_a_node_of_is_waited_for_only_a_while_after():
     """roslaunch's refusal, in a terminal's output among its other lines
     (and in the part kept of a long one), starts the others' time."""

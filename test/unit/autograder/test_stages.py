@@ -62,7 +62,7 @@ def test_executables_that_drew_nothing_together_run_each_alone_until_one_draws(
     tried = []
     monkeypatch.setattr(driver.submission, 'find', lambda folder: Package(
         name="lab", folder=folder, launch=None, problem='', notes=[]))
-    monkeypatch.setattr(driver.session, 'run', lambda package, limits, box: run_of(
+    monkeypatch.setattr(driver.session, 'run', lambda package, limits, box, letters: run_of(
         'together', ['a.py', 'b.py', 'c.py']))
     monkeypatch.setattr(driver.session, 'alone', lambda first, name, limits, box: (
         tried.append(name), run_of(name))[1])
@@ -83,7 +83,7 @@ def test_executables_of_which_one_alone_drove_are_not_run_alone(tmp_path, monkey
     talked: alone, each would do the same, so the together run is the row."""
     monkeypatch.setattr(driver.submission, 'find', lambda folder: Package(
         name="lab", folder=folder, launch=None, problem='', notes=[]))
-    monkeypatch.setattr(driver.session, 'run', lambda package, limits, box: run_of(
+    monkeypatch.setattr(driver.session, 'run', lambda package, limits, box, letters: run_of(
         'together', ['controller.py', 'talker.py'], drivers=['/controller0']))
 
     def alone(*_):
