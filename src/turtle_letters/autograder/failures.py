@@ -17,6 +17,7 @@ LOGS_READ = 40          # log files read at most
 LOG_DEPTH = 2           # folders under ~/.ros/log looked in
 LOG_ENTRIES = 1000      # entries of a folder looked at
 SAID_CHARS = 200        # characters of a line a node printed, shown at most
+ARGUMENT_ERRORS = ('IndexError', 'ValueError')    # of a line that reads sys.argv: no arguments
 # how the lines roslaunch prints of its own begin
 ROSLAUNCH_LINES = ('process[', '[', 'setting /', 'ROS_MASTER_URI', '...', 'started roslaunch',
                    'auto-starting', 'SUMMARY', 'PARAMETERS', 'NODES', '* ', 'log file:')
@@ -159,16 +160,36 @@ def in_package(text, work):
     """' (PATH, line N)': the last line of the student's own code that the
     traceback ending `text`'s last error line names, PATH as in their
     workspace's src; '' where it names none (a Python 2 print is a
-    SyntaxError at its line, which a student finds so)."""
+    SyntaxError at its line, which a student finds so). Where that line
+    reads sys.argv and the error is an IndexError or a ValueError, what it
+    wanted too (a real class's H passed float(sys.argv[1]) on: roslaunch
+    gives a node `__name:=` there)."""
+    frame = _own_frame(text, work)
+    if frame is None:
+        return ''
+    path, number, code = frame
+    wanted = ': it reads command-line arguments (sys.argv), and a node started as rosrun ' \
+             'or roslaunch starts it has none but theirs (__name:=, __log:=)' \
+        if 'sys.argv' in code and last_error(text).startswith(ARGUMENT_ERRORS) else ''
+    return f' ({path}, line {number}){wanted}'
+
+
+def _own_frame(text, work):
+    """(PATH, N, its code) of the last line of the student's own code that
+    the traceback ending `text`'s last error line names, or None."""
     lines = text.splitlines()
     errors = [i for i, line in enumerate(lines) if ERROR_LINE.match(line)]
     if not errors:
-        return ''
+        return None
     start = errors[-2] + 1 if len(errors) > 1 else 0
     inside = sources(work)
-    frames = [m.groups() for m in map(FRAME_LINE.match, lines[start:errors[-1]])
-              if m and m.group(1).startswith(inside)]
-    return f' ({frames[-1][0][len(inside):]}, line {frames[-1][1]})' if frames else ''
+    frames = [(i, m.groups()) for i, m in enumerate(map(FRAME_LINE.match, lines))
+              if start <= i < errors[-1] and m and m.group(1).startswith(inside)]
+    if not frames:
+        return None
+    i, (path, number) = frames[-1]
+    code = lines[i + 1].strip() if i + 1 < errors[-1] else ''
+    return path[len(inside):], number, code
 
 
 def talker_failure(output, work):

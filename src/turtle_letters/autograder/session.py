@@ -383,16 +383,14 @@ class Refused:
 
 def _watch(lab, limits, result):
     """Launched at `started`: up once a node listens on /chatter, a turtle
-    moves or a prompt waits for a line (_prompting); P typed after the
-    turtle stood for limits.stand; the drawing watched from the launch (a
-    turtle that did not wait), the trigger, or the letters typed at a
-    prompt (_typed_letters)."""
+    moves or a prompt waits (_up); P typed after the turtle stood for
+    limits.stand; the drawing watched from the launch (a turtle that did
+    not wait), the trigger, or the letters typed at a prompt (_typed_letters)."""
     terminal, watcher, alive = lab.terminal, lab.watcher, lab.going
     events, record = watcher.events, lab.world.events
     started = time.monotonic()
     refused = Refused(terminal.output, limits.start)
-    if not wait_until(lambda: _listening(events) or seen.moved(record, started) or
-                      _prompting(terminal), limits.launch,
+    if not wait_until(lambda: _up(lab, started, refused, limits), limits.launch,
                       lambda: alive() and not refused.waited_out()):
         result.launch = Step(False, 'the lab did not come up')
         return
@@ -437,6 +435,16 @@ def _watch(lab, limits, result):
     else:
         result.still_from = shown
     result.cpu_pct, result.script_until = cpu.share(), scripts.until
+
+
+def _up(lab, started, refused, limits):
+    """Whether the lab launched at `started` is up: a node listens on
+    /chatter or a turtle moved; or, neither after limits.start and no node
+    refused by roslaunch (a TA's fallback runs then), a prompt waits for a
+    line (_prompting: a talker waits so too, before its controller listens)."""
+    return _listening(lab.watcher.events) or seen.moved(lab.world.events, started) or (
+        time.monotonic() - started >= limits.start and refused.said is None and
+        _prompting(lab.terminal))
 
 
 def _typed_letters(lab, limits, result, typed, shown):

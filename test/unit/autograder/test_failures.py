@@ -112,6 +112,31 @@ def test_a_death_says_where_in_the_package_its_error_was_raised(tmp_path):
         "print(...)? (VS/src/initials.py, line 20)")
 
 
+def test_a_script_that_wants_its_arguments_says_so(tmp_path):
+    """A real class's H: its script passes float(sys.argv[1]) and [2] on.
+    Started by roslaunch, its first argument is roslaunch's own __name:=,
+    and it died of a ValueError; with none (rosrun) of an IndexError. The
+    row says it wants arguments; another IndexError says only where."""
+    work = str(tmp_path)
+    died = (f'Traceback (most recent call last):\n'
+            f'  File "{work}/ws/src/h_lab/scripts/draw_h.py", line 151, in <module>\n'
+            f'    move_turtle(float(sys.argv[1]),float(sys.argv[2]))\n'
+            f"ValueError: could not convert string to float: '__name:=draw_h0'\n"
+            f'[draw_h0-1] process has died [pid 20, exit code 1].\n')
+    wants = ('(h_lab/scripts/draw_h.py, line 151): it reads command-line arguments (sys.argv), '
+             'and a node started as rosrun or roslaunch starts it has none but theirs '
+             '(__name:=, __log:=)')
+    assert talker_failure(died, work) == ("draw_h0 died: ValueError: could not convert string "
+                                          f"to float: '__name:=draw_h0' {wants}")
+    none = died.replace("ValueError: could not convert string to float: '__name:=draw_h0'",
+                        'IndexError: list index out of range')
+    assert talker_failure(none, work) == \
+        f'draw_h0 died: IndexError: list index out of range {wants}'
+    other = none.replace('float(sys.argv[1]),float(sys.argv[2])', 'corners[4]')
+    assert talker_failure(other, work) == ('draw_h0 died: IndexError: list index out of '
+                                           'range (h_lab/scripts/draw_h.py, line 151)')
+
+
 def test_a_death_with_no_error_line_says_the_line_printed_just_before_it(tmp_path):
     """A real package's talker wants arguments, says so and exits 1: the
     row quotes that line; a line roslaunch printed itself is no reason."""
