@@ -50,6 +50,8 @@ class Drawing(NamedTuple):
     background: tuple = BACKGROUND  # the canvas's colour after the last clear or reset
     teleported: List[list] = []     # the ink teleports laid on the canvas left: never read
     teleported_looks: List[tuple] = []  # ... the look of each of its lines
+    earlier: List[list] = []        # ink left on the canvas from before the drawing: never read
+    earlier_looks: List[tuple] = []     # ... the look of each of its lines
 
     @property
     def seconds(self):
@@ -179,6 +181,7 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None) ->
     wiped = [(e['t'] - first['t'], e['k']) for e in wipes]
     lines, looks = strokes(driven)
     teleported, teleported_looks = strokes(_inked(kept, 'jump', background))
+    earlier, earlier_looks = _left_before(record, first['t'], stop, background)
     return Drawing(lines, first['t'], ended, commands, impostors(events),
                    sum(e.get('n', 1) for e in jumps),
                    sum(1 for e in kept if e['k'] == 'jump' and e['ink']),
@@ -186,7 +189,20 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None) ->
                    wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
                    sum(1 for e in record[1:] if e['k'] == 'pen'),
                    sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')), looks, background,
-                   teleported, teleported_looks)
+                   teleported, teleported_looks, earlier, earlier_looks)
+
+
+def _left_before(record, start, stop, background):
+    """(lines, looks) of the ink laid before `start`, driven or teleported,
+    that no clear or reset wiped by `stop`: turtlesim still showed it (a
+    real class's script drove its turtle a metre before asking at a prompt
+    for the letter to draw)."""
+    wiped = max((e['t'] for e in record if e['k'] in ('clear', 'reset') and e['t'] <= stop),
+                default=-math.inf)
+    left = [e for e in record if wiped < e['t'] < start]
+    driven, driven_looks = strokes(_inked(left, 'move', background))
+    jumped, jumped_looks = strokes(_inked(left, 'jump', background))
+    return driven + jumped, driven_looks + jumped_looks
 
 
 def _inked(record, kind, background):

@@ -132,7 +132,8 @@ def picture(out, student_id, facts):
     from ..grading.picture import draw_ink
     path = os.path.join(folder(out, student_id), 'drawing.png')
     draw_ink(path, d.strokes, d.looks or [()] * len(d.strokes), d.background, overlay(facts),
-             caption(student_id, facts), (d.teleported, d.teleported_looks))
+             caption(student_id, facts),
+             (d.earlier + d.teleported, d.earlier_looks + d.teleported_looks))
     return os.path.relpath(path, out)
 
 
@@ -154,11 +155,15 @@ def caption(student_id, facts):
     ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
     named = ' (one OCR alone reads: named only)' if any(not s for _, s in overlay(facts)) else ''
     jumped = facts.drawing is not None and facts.drawing.teleported
+    before = facts.drawing is not None and facts.drawing.earlier
+    also = [said for said, shown_too in (('teleports laid ink too', jumped),
+                                         ('ink from before the drawing too', before)) if shown_too]
     return (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
             f'{drawn(facts.readings) or "no letter"}{ocr}\n'
             f'credited: {"".join(e for _, e in credited(facts)) or "none"}; left: the canvas as '
-            f'turtlesim showed it{" (teleports laid ink too)" if jumped else ""}; right: the '
-            f'{"driven " if jumped else ""}ink enlarged, each letter read dashed over it{named}')
+            f'turtlesim showed it{" (" + ", ".join(also) + ")" if also else ""}; right: the '
+            f'{"driven " if jumped else ""}ink{" of the drawing" if before else ""} enlarged, '
+            f'each letter read dashed over it{named}')
 
 
 def write_csv(path, rows):

@@ -159,11 +159,12 @@ def draw_canvas(path_png, drawings, tolerance=0.02):
 ZOOM_PX = 500       # px: the side of the ink's own box, beside the canvas
 
 
-def draw_ink(path_png, strokes, looks, background, letters, caption, teleported=((), ())):
+def draw_ink(path_png, strokes, looks, background, letters, caption, unread=((), ())):
     """A student's drawing as a TA sees it: on the left, the canvas as
     turtlesim showed it (500 px, each stroke in its colour and width, and
-    the ink `teleported` laid, (strokes, looks)); on the right, the ink
-    read, its box enlarged (the teleports' ink, never read, left out:
+    the ink on it that is not read, (strokes, looks): teleports', and ink
+    from before the drawing began); on the right, the ink
+    read, its box enlarged (the ink not read left out:
     with none driven, an empty frame), with each of `letters` (label,
     strokes), the letters read, drawn thin and dashed over the ink and
     named; `caption` (lines) above. Nothing expected is drawn: a guess's
@@ -186,7 +187,7 @@ def draw_ink(path_png, strokes, looks, background, letters, caption, teleported=
     canvas = (10, top, CANVAS_PIXELS / WORLD_SIZE, (0.0, 0.0), WORLD_SIZE)
     zoom = (CANVAS_PIXELS + 20, top, ZOOM_PX / side,
             (middle[0] - side / 2, middle[1] - side / 2), side)
-    for view, inks in ((canvas, [teleported, (strokes, looks)]), (zoom, [(strokes, looks)])):
+    for view, inks in ((canvas, [unread, (strokes, looks)]), (zoom, [(strokes, looks)])):
         left, upper, scale, corner, size = view
         area = QRectF(left, upper, size * scale, size * scale)
         painter.setClipRect(area)

@@ -65,6 +65,24 @@ def test_ink_teleports_laid_before_the_last_clear_is_not_on_the_canvas():
     assert d.teleported == [[(5.0, 5.0), (6.0, 5.0)]]
 
 
+def test_ink_laid_before_the_drawing_and_not_wiped_is_on_the_canvas_unread():
+    """A real class's script drove its turtle a metre, then asked at a
+    prompt for the letter to draw: turtlesim still shows that metre beside
+    the letter, and it is no part of the drawing read. A clear before the
+    drawing ends wipes it; one after does not."""
+    metre, letter = line(1, 5.0, 6.0), line(5, 2.0, 3.0)
+    d = drawing(metre + letter + [dict(k='clear', t=20.0)], [graph()], since=4.0, settle=2.0,
+                until=30.0)
+    assert [(s[0][0], round(s[-1][0], 6)) for s in d.strokes] == [(2.0, 3.0)]
+    assert [(s[0][0], round(s[-1][0], 6)) for s in d.earlier] == [(5.0, 6.0)]
+    assert d.earlier_looks == [tuple(PEN)]
+    teleported = [jump(0.5, 1.0, 2.0, ink=True)] + letter
+    assert drawing(teleported, [graph()], since=4.0, settle=2.0, until=30.0).earlier == \
+        [[(1.0, 5.0), (2.0, 5.0)]]
+    wiped = metre + [dict(k='clear', t=3.0)] + letter
+    assert drawing(wiped, [graph()], since=4.0, settle=2.0, until=30.0).earlier == []
+
+
 def test_every_turtles_ink_counts_each_in_lines_of_its_own():
     mixed = [(t, e) for e in line(1, 1.0, 2.0) for t in [e['t']]] + \
         [(e['t'] + TICK / 2, e) for e in line(1, 6.0, 7.0, turtle='pen2')]

@@ -106,3 +106,18 @@ def test_the_caption_says_teleports_laid_ink_shown_on_the_canvas_only():
                                         readings=read_row(dot, 'MI')))
     assert 'turtlesim showed it (teleports laid ink too)' in said and 'the driven ink' in said
     assert 'teleports' not in plain and 'driven' not in plain
+
+
+def test_the_caption_says_ink_from_before_the_drawing_is_shown_on_the_canvas_only():
+    """A real class's script drove a metre before asking at a prompt for
+    its letter: the canvas shows the metre too, the ink enlarged is the
+    drawing's."""
+    ell = [[(2.0, 5.0), (2.0, 2.0), (3.5, 2.0)]]
+    metre = [[(5.5, 5.5), (6.5, 5.5)]]
+    before = Drawing(ell, 1.0, 9.0, 9, [], earlier=metre, earlier_looks=[()])
+    said = reports.caption('harf', Facts('L', drawing=before, readings=read_row(ell, 'L')))
+    plain = reports.caption('harf', Facts('L', drawing=before._replace(earlier=[]),
+                                          readings=read_row(ell, 'L')))
+    assert 'turtlesim showed it (ink from before the drawing too)' in said
+    assert 'the ink of the drawing enlarged' in said
+    assert 'before' not in plain and 'of the drawing' not in plain
