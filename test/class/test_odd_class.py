@@ -11,7 +11,8 @@ starts turtlesim alone, its letter a shell script without #! that its
 course runs with bash, and one whose controller its launch file starts in
 a terminal this machine lacks (terminator), and one whose controller was
 written on Windows (its #! line ends in a carriage return), and one that
-asks at a prompt which letter to draw, as another course's lab does.
+asks at a prompt which letter to draw, as another course's lab does, and
+one whose CMakeLists.txt names an include folder git never kept.
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -116,6 +117,9 @@ CONCLUSIONS = {
                                  'l_controller.py), as a TA would; l_controller.py: no #! line '
                                  'exec can follow'),
     'o13_asks': ('L', 'pass', 'no launch file: the grader started its executables (asks.py)'),
+    'o14_included': ('L', 'pass', "include dir 'include' does not exist relative to 'lab1'; "
+                                  "git keeps no empty folder: the grader made lab1/include/, "
+                                  "empty, as a TA would, and it built"),
 }
 
 
@@ -124,7 +128,7 @@ def graded(tmp_path_factory):
     top = tmp_path_factory.mktemp('odd')
     cls, out = str(top / 'class'), str(top / 'out')
     for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim', 'o8_unbuilt',
-                 'o11_prefixed', 'o12_windows'):
+                 'o11_prefixed', 'o12_windows', 'o14_included'):
         shutil.copytree(LENA, os.path.join(cls, name))
     nest(os.path.join(cls, 'o1_deep', 'lab1'), 1100)
     os.mkfifo(os.path.join(cls, 'o3_fifo', 'lab1', 'scripts', 'pipe'))
@@ -138,6 +142,11 @@ def graded(tmp_path_factory):
     cmake = os.path.join(cls, 'o8_unbuilt', 'lab1', 'CMakeLists.txt')
     with open(cmake) as f:      # a project named otherwise than its package: catkin refuses it
         text = f.read().replace('project(lab1)', 'project(lab_one)')
+    with open(cmake, 'w') as f:
+        f.write(text)
+    cmake = os.path.join(cls, 'o14_included', 'lab1', 'CMakeLists.txt')
+    with open(cmake) as f:      # catkin_create_pkg made include/, which git never kept
+        text = f.read().replace('catkin_package()', 'catkin_package(INCLUDE_DIRS include)')
     with open(cmake, 'w') as f:
         f.write(text)
     launch = os.path.join(cls, 'o11_prefixed', 'lab1', 'launch', 'start.launch')
@@ -175,7 +184,8 @@ def graded(tmp_path_factory):
             with open(path, 'w') as f:
                 f.write(text)
             os.chmod(path, 0o755 if name == 'scripts/asks.py' else 0o644)
-    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13')  # not o2
+    lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13',
+             'o14')  # not o2
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +

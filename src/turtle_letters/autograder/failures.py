@@ -31,8 +31,8 @@ def why_not_launched(output, events, work):
     if refused or exception:
         return refused[0][len('ERROR: '):] if refused else exception
     died = first_death(output, work)
-    if died and graph is not None:
-        return died
+    if died and graph is not None:     # and a server of the package's waits, if one does
+        return f'{died}; {waits_for_calls(graph)}' if graph.get('offered') else died
     if graph is None:
         return last_error(output) or "the grader's watcher saw no ROS graph"
     if seen.unheard(events):
@@ -142,6 +142,8 @@ def first_death(output, work):
         if why:
             return f'{node} died: {why}{in_package(text, work)}'
     said = last_said(output[:died.start()])
+    if said and work:       # a usage line names the script as the sandbox holds it
+        said = said.replace(os.path.join(work, 'ws', ''), '')
     return f'{node} died' + (f' just after this line was printed: {said}' if said else '')
 
 

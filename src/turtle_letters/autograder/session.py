@@ -30,6 +30,9 @@ POLL = 0.1                  # s between looks at what the watcher saw
 BASH = ' launch-prefix="bash"'  # a shell script without #! is run with bash, as a TA types it
 PYTHON = ' launch-prefix="python3"'     # ... and a Python script exec cannot start, with python3
 REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch file it cannot start
+# catkin's words for an include folder a package names and lacks (catkin_package.cmake)
+MISSING_INCLUDE = re.compile(r"catkin_package\(\) include dir '([^']+)' does not exist "
+                             r"relative to '([^']+)'")
 NO_TURTLESIM = 'its launch file does not start turtlesim'   # nor does the grader's, by design
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
@@ -179,12 +182,13 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
     made = prepare(package, box.work)
     stand_in(box.work)
     box.hand_over()
-    result.build, output = build(box, limits)
-    result.log.append(('catkin_make', output))
+    folder_made = _built(box, limits, result)
     result.limit = box.reached()
     if not box.going():
         return result
     if not result.build.ok:
+        if folder_made:
+            result.build = result.build._replace(says=f'{folder_made}; then {result.build.says}')
         return _unbuilt(box, limits, result)
     _launch_and_watch(box, limits, result)
     if _refused(result, box) and box.going():
@@ -198,12 +202,48 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
         result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
                                     f'the grader made {"them" if len(made) > 1 else "it"} '
                                     f'executable, as a TA would', result.launch.seconds)
+    if folder_made and result.build.ok:
+        result.build = Step(False, f'{folder_made}, and it built', result.build.seconds)
     if package.loose and result.build.ok:
         result.build = Step(False, f'no package.xml in {package.folder}: nothing a catkin '
                                    f'workspace builds; the grader wrapped its files in a package '
                                    f'({LOOSE}) and ran its scripts, as a TA would',
                             result.build.seconds)
     return result
+
+
+def _built(box, limits, result):
+    """catkin_make (build), and a TA's fallback where catkin_package() names
+    an include folder the package lacks (catkin_create_pkg makes one, and
+    git keeps no empty folder: the build fails so on every machine but the
+    student's): the folder made, empty, in the package's copy, and the
+    workspace built again. What failed and was made, for `builds`, or ''."""
+    result.build, output = build(box, limits)
+    result.log.append(('catkin_make', output))
+    folder = None if result.build.ok else missing_include(box.work, output)
+    if folder is None or not box.going():
+        return ''
+    failed = result.build
+    os.makedirs(folder)
+    result.build, output = build(box, limits)
+    result.log.append(('catkin_make', output))
+    made = os.path.relpath(folder, os.path.join(box.work, 'ws', 'src'))
+    return (f'{failed.says}; git keeps no empty folder: the grader made {made}/, empty, '
+            f'as a TA would')
+
+
+def missing_include(work, output):
+    """The folder catkin_package() said a package of the workspace in
+    `work` lacks, in that package's copy; None where it said none, or
+    named one outside the package or there already."""
+    said = MISSING_INCLUDE.search(' '.join(output.split()))
+    if said is None:
+        return None
+    source = os.path.realpath(os.path.join(work, 'ws', 'src'))
+    package = os.path.realpath(said.group(2))
+    folder = os.path.realpath(os.path.join(package, said.group(1)))
+    inside = package.startswith(source + os.sep) and folder.startswith(package + os.sep)
+    return folder if inside and not os.path.lexists(folder) else None
 
 
 def _unbuilt(box, limits, result):

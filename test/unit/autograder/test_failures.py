@@ -95,6 +95,27 @@ def test_a_lab_that_never_came_up_but_offers_a_service_says_so(tmp_path):
         '/draw: the package draws only when it is called, not on P')
 
 
+def test_a_client_that_died_wanting_arguments_beside_a_server_waiting_says_both(tmp_path):
+    """A real class's package without a launch file: its client prints its
+    usage and exits, its server waits for a call of its own service. The
+    row says both, and the usage line names the script as the student's
+    workspace holds it, not the sandbox's path."""
+    work = str(tmp_path)
+    usage = (f'process[client0-1]: started with pid [21]\n'
+             f'{work}/ws/devel/lib/letters/draw_letter_client.py [x y]\n'
+             f'[client0-1] process has died [pid 21, exit code 1].\n')
+    graph = dict(kind='graph', t=1.0, chatter_subscribers=[],
+                 offered={'/server': ['/draw_letter']})
+    assert why_not_launched(usage, [graph], work) == (
+        'client0 died just after this line was printed: devel/lib/letters/draw_letter_client.py '
+        '[x y]; /server waits for a call of /draw_letter: the package draws only when it is '
+        'called, not on P')
+    graph['offered'] = {}
+    assert why_not_launched(usage, [graph], work) == (
+        'client0 died just after this line was printed: devel/lib/letters/draw_letter_client.py '
+        '[x y]')
+
+
 def test_a_death_says_where_in_the_package_its_error_was_raised(tmp_path):
     """The last frame of the student's own code in the traceback, as a
     path in their workspace: a runtime error's, and a Python 2 print's

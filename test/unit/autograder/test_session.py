@@ -12,7 +12,8 @@ from turtle_letters.autograder import world
 from turtle_letters.autograder.processes import Capped
 from turtle_letters.autograder.session import (NO_TURTLESIM, Refused, Run, Step,
                                                 drivers_first, executables, started_instead,
-                                               first_error, generated_launch, prepare)
+                                               first_error, generated_launch, missing_include,
+                                               prepare)
 from turtle_letters.autograder.submission import find
 from turtle_letters.autograder.world import Lab
 
@@ -117,6 +118,28 @@ def handed_in(tmp_path, name, files):
     package = find(str(tmp_path / 'sub'))
     made = prepare(package, str(tmp_path / 'work'))
     return package, SimpleNamespace(work=str(tmp_path / 'work')), made
+
+
+def test_an_include_folder_catkin_says_a_package_lacks_is_made_only_inside_it(tmp_path):
+    """A real class's CMakeLists.txt names INCLUDE_DIRS include, a folder
+    catkin_create_pkg made and git never kept: the folder catkin names is
+    made in the package's copy, a TA's fallback; never one outside it, nor
+    where something is already."""
+    work = str(tmp_path)
+    package = tmp_path / 'ws' / 'src' / 'letters'
+    package.mkdir(parents=True)
+
+    def said(folder, relative_to):     # catkin's message, as CMake wraps it
+        return (f'CMake Error at /usr/share/catkin/cmake/catkin_package.cmake:312 (message):\n'
+                f"  catkin_package() include dir '{folder}' does not exist relative to\n"
+                f"  '{relative_to}'\nCall Stack (most recent call first):\n")
+    assert missing_include(work, said('include', package)) == str(package / 'include')
+    assert missing_include(work, 'CMake Error at CMakeLists.txt:3 (project):\n') is None
+    assert missing_include(work, said('../../../etc', package)) is None
+    assert missing_include(work, said('include', tmp_path / 'ws')) is None
+    assert missing_include(work, said('include', '/etc')) is None
+    (package / 'include').symlink_to(tmp_path / 'elsewhere')
+    assert missing_include(work, said('include', package)) is None
 
 
 def test_scripts_handed_in_without_the_execute_bit_are_started_for_want_of_a_launch_file(tmp_path):
