@@ -176,7 +176,8 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
     launch-prefix of a program the machine lacks) gives way to the
     package's executables, started as without a launch file.
     Scripts handed in without a package.xml are wrapped in one and run,
-    costing `builds` alone. A prompt that waits for a line where P drew
+    and an include folder the package names and lacks is made (_built),
+    each costing `builds` alone. A prompt that waits for a line where P drew
     nothing is typed the roster's `letters` (_typed_letters)."""
     result = Run(package, letters)
     made = prepare(package, box.work)
