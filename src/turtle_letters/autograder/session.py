@@ -33,6 +33,7 @@ REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch fi
 # catkin's words for an include folder a package names and lacks (catkin_package.cmake)
 MISSING_INCLUDE = re.compile(r"catkin_package\(\) include dir '([^']+)' does not exist "
                              r"relative to '([^']+)'")
+MKDIR_S = 10       # s a mkdir in the sandbox may take
 NO_TURTLESIM = 'its launch file does not start turtlesim'   # nor does the grader's, by design
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
@@ -225,7 +226,14 @@ def _built(box, limits, result):
     if folder is None or not box.going():
         return ''
     failed = result.build
-    os.makedirs(folder)
+    # made inside the sandbox: the build ran the package's CMake code, which may have
+    # left a process to swap the path for a link out of it since
+    subprocess.run(box.inside(['mkdir', '-p', '--', folder],
+                              _env(box.work, box.master_uri, box.isolated)),
+                   stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, timeout=MKDIR_S, check=False)
+    if not os.path.isdir(folder):
+        return ''
     result.build, output = build(box, limits)
     result.log.append(('catkin_make', output))
     made = os.path.relpath(folder, os.path.join(box.work, 'ws', 'src'))
