@@ -156,12 +156,13 @@ def caption(student_id, facts):
     named = ' (one OCR alone reads: named only)' if any(not s for _, s in overlay(facts)) else ''
     jumped = facts.drawing is not None and facts.drawing.teleported
     before = facts.drawing is not None and facts.drawing.earlier
-    also = [said for said, shown_too in (('teleports laid ink too', jumped),
-                                         ('ink from before the drawing too', before)) if shown_too]
+    also = ' and '.join(said for said, shown_too in (('teleports laid ink', jumped),
+                                                     ('ink from before the drawing', before))
+                        if shown_too)
     return (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
             f'{drawn(facts.readings) or "no letter"}{ocr}\n'
             f'credited: {"".join(e for _, e in credited(facts)) or "none"}; left: the canvas as '
-            f'turtlesim showed it{" (" + ", ".join(also) + ")" if also else ""}; right: the '
+            f'turtlesim showed it{f" ({also} too)" if also else ""}; right: the '
             f'{"driven " if jumped else ""}ink{" of the drawing" if before else ""} enlarged, '
             f'each letter read dashed over it{named}')
 

@@ -121,3 +121,6 @@ def test_the_caption_says_ink_from_before_the_drawing_is_shown_on_the_canvas_onl
     assert 'turtlesim showed it (ink from before the drawing too)' in said
     assert 'the ink of the drawing enlarged' in said
     assert 'before' not in plain and 'of the drawing' not in plain
+    both = reports.caption('harf', Facts('L', drawing=before._replace(teleported=metre),
+                                         readings=read_row(ell, 'L')))
+    assert '(teleports laid ink and ink from before the drawing too)' in both
