@@ -60,11 +60,12 @@ def roslaunch_exception(output, work=''):
     lines = output.splitlines()
     for i, line in enumerate(lines):
         if line.startswith('RLException: '):
+            inside = sources(work) if work else None
             said = line[len('RLException: '):].strip()
+            said = said.replace(inside, '') if inside else said     # a launch file it names
             below = [m.strip() for m in lines[i + 1:i + 4] if m.strip()]
             if not (said.endswith(':') and below):
                 return f'{RLEXCEPTION}{said}'
-            inside = sources(work) if work else None
             words = [w.replace(inside, '') if inside else w for w in below[0].split()
                      if not w.startswith('__')]
             return f'{RLEXCEPTION}{said} {" ".join(words)}'

@@ -55,6 +55,16 @@ def test_why_the_lab_did_not_come_up():
         "run: gdb -ex run --args p/draw.py")
 
 
+def test_a_launch_file_roslaunch_names_is_named_as_the_student_knows_it():
+    """A launch file that wants an argument no one gives: roslaunch names
+    it by its path in the sandbox; the row, by its path in the package."""
+    unset = ('RLException: [/w/ws/src/lab1/launch/start.launch] requires the \'letter\' arg '
+             'to be set\nThe traceback for the exception was written to the log file\n')
+    graph = dict(kind='graph', t=0, simulator=['/sim'], chatter_subscribers=[])
+    assert why_not_launched(unset, [graph], '/w') == (
+        "roslaunch: [lab1/launch/start.launch] requires the 'letter' arg to be set")
+
+
 def test_why_the_turtle_never_moved(tmp_path):
     logs = tmp_path / 'home' / '.ros' / 'log' / 'run'
     logs.mkdir(parents=True)
