@@ -60,14 +60,11 @@ def roslaunch_exception(output, work=''):
     lines = output.splitlines()
     for i, line in enumerate(lines):
         if line.startswith('RLException: '):
-            inside = sources(work) if work else None
-            said = line[len('RLException: '):].strip()
-            said = said.replace(inside, '') if inside else said     # a launch file it names
+            said = theirs(line[len('RLException: '):].strip(), work)    # a launch file it names
             below = [m.strip() for m in lines[i + 1:i + 4] if m.strip()]
             if not (said.endswith(':') and below):
                 return f'{RLEXCEPTION}{said}'
-            words = [w.replace(inside, '') if inside else w for w in below[0].split()
-                     if not w.startswith('__')]
+            words = [w for w in theirs(below[0], work).split() if not w.startswith('__')]
             return f'{RLEXCEPTION}{said} {" ".join(words)}'
     return ''
 
@@ -75,6 +72,15 @@ def roslaunch_exception(output, work=''):
 def sources(work):
     """The sandbox's workspace sources, a path prefix: what follows is as the student knows it."""
     return os.path.join(work, 'ws', 'src', '')
+
+
+def theirs(text, work):
+    """`text` with the paths into the sandbox's workspace as the student
+    knows them: a source by its path in their src, what the build made by
+    its path in their workspace (devel/lib/...); unchanged without `work`."""
+    if not work:
+        return text
+    return text.replace(sources(work), '').replace(os.path.join(work, 'ws', ''), '')
 
 
 def waits_for_calls(graph):
@@ -142,9 +148,7 @@ def first_death(output, work):
         why = last_error(text)
         if why:
             return f'{node} died: {why}{in_package(text, work)}'
-    said = last_said(output[:died.start()])
-    if said and work:       # a usage line names the script as the sandbox holds it
-        said = said.replace(os.path.join(work, 'ws', ''), '')
+    said = theirs(last_said(output[:died.start()]), work)   # a usage line names its script
     return f'{node} died' + (f' just after this line was printed: {said}' if said else '')
 
 

@@ -17,7 +17,7 @@ from xml.sax.saxutils import quoteattr
 
 from ..isolation.sandbox import GiB, Caps, Sandbox
 from . import observations as seen
-from .failures import RLEXCEPTION, talker_failure, why_not_launched, why_still
+from .failures import RLEXCEPTION, sources, talker_failure, why_not_launched, why_still
 from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
@@ -134,7 +134,7 @@ def build(box, limits):
         return Step(False, f'the build was stopped: {limit}' if limit else
                     f'the build did not end within {limits.build:g} s'), text
     if process.returncode != 0:
-        error = first_error(text).replace(os.path.join(box.work, 'ws', 'src', ''), '')
+        error = first_error(text).replace(sources(box.work), '')
         return Step(False, f'catkin_make failed: {error}', time.monotonic() - started), text
     return Step(True, f'built in {time.monotonic() - started:.1f} s',
                 time.monotonic() - started), text
@@ -236,7 +236,7 @@ def _built(box, limits, result):
         return ''
     result.build, output = build(box, limits)
     result.log.append(('catkin_make', output))
-    made = os.path.relpath(folder, os.path.join(box.work, 'ws', 'src'))
+    made = os.path.relpath(folder, os.path.realpath(os.path.join(box.work, 'ws', 'src')))
     return (f'{failed.says}; git keeps no empty folder: the grader made {made}/, empty, '
             f'as a TA would')
 
