@@ -123,6 +123,22 @@ def test_the_files_handed_back(graded):
     assert suite.get('tests') == '23' and suite.get('failures') == '10'
 
 
+def test_each_drawing_kept_reads_again_as_it_was_graded(graded):
+    """grade_class.py --reread OUT, as an instructor runs it on a class graded: the ink
+    of each student who drove some (Tariq's teleports laid all his: none
+    kept) read again, no student's code run, says each letter line as
+    results.json does."""
+    _, out, _ = graded
+    done = subprocess.run(['rosrun', 'turtle_letters', 'grade_class.py', '--reread', out],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          universal_newlines=True, env=readable_env(), timeout=600)
+    assert done.returncode == 0, done.stdout[-3000:]
+    lines = done.stdout.splitlines()
+    drove = sorted(student for student, (_, drawn, _, _) in CONCLUSIONS.items() if drawn)
+    assert [line.split(': as graded: ')[0] for line in lines[:-1]] == drove, done.stdout
+    assert lines[-1] == f'{len(drove)} drawings read again, 0 read differently now'
+
+
 def test_nothing_is_left_behind(graded):
     _, _, (files, processes) = graded
     assert tree_hash(SUBMISSIONS) == files

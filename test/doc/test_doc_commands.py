@@ -49,6 +49,8 @@ ELSEWHERE = {
     'rosrun turtle_letters grade_class.py test/class/submissions --roster test/class/roster.csv '
     '--rubric test/class/rubric.yaml --out /tmp/grades --jobs 2':
         'test/class/test_grade_class.py runs exactly this, into a folder of its own',
+    'rosrun turtle_letters grade_class.py --reread OUT':
+        'test/class/test_grade_class.py reads the class it graded again so',
 }
 RECIPE = 'doc/install.md'       # test/workspace/test_workspaces.py runs it line by line
 # Sent to a launch, in this order, each with what its controller then says

@@ -3,6 +3,7 @@
     grade_class.py SUBMISSIONS --roster ROSTER.csv --out OUT [--jobs N] [--rubric FILE]
     grade_class.py --one FOLDER --name NAME [--letter L] --out OUT   (exit 0 pass, 1 fail)
     grade_class.py --gradescope           (/autograder/submission to results/results.json)
+    grade_class.py --reread OUT           (the drawings kept in OUT read again: no code run)
 
 Here: the arguments, the pool (N students at a time, each in a slot of
 its own: a user, a core), the progress, the signals and the class's files.
@@ -55,10 +56,14 @@ def arguments(argv):
                         help='grade AUTOGRADER/submission into AUTOGRADER/results/results.json')
     parser.add_argument('--autograder', default=GRADESCOPE,
                         help=f"with --gradescope: Gradescope's folder ({GRADESCOPE})")
+    parser.add_argument('--reread', metavar='OUT',
+                        help='read again the drawings a grading kept in OUT (OUT/ID/ink.json), '
+                             'running no student code: where does a letter read differently now?')
     args = parser.parse_args(argv)
-    modes = [bool(args.submissions), bool(args.one), args.gradescope]
+    modes = [bool(args.submissions), bool(args.one), args.gradescope, bool(args.reread)]
     if sum(modes) != 1:
-        parser.error('give SUBMISSIONS with --roster, or --one FOLDER, or --gradescope')
+        parser.error('give SUBMISSIONS with --roster, or --one FOLDER, or --gradescope, '
+                     'or --reread OUT')
     if args.submissions and not (args.roster and args.out):
         parser.error('SUBMISSIONS needs --roster and --out')
     if args.one and not (args.out and (args.name or args.letter)):
@@ -387,8 +392,41 @@ def grade_gradescope(args, rubric):
     return 0
 
 
+def reread_class(out):
+    """--reread OUT: each drawing kept in OUT read again (driver.reread), its
+    letter criterion printed as it reads now, beside what it said where that
+    differs. Exit 0; 1 where a kept file is no drawing (its line says so, the
+    others are read); 2 where OUT keeps none. No root, no sandbox: no code runs."""
+    kept = sorted(name for name in (os.listdir(out) if os.path.isdir(out) else [])
+                  if os.path.isfile(os.path.join(out, name, reports.INK_FILE)))
+    if not kept:
+        print(f'grade_class.py: no drawing kept in {out} (no {out}/ID/{reports.INK_FILE}): '
+              f'give the --out folder of a grading', file=sys.stderr)
+        return 2
+    changed = broken = 0
+    for name in kept:
+        try:
+            was, now = driver.reread(os.path.join(out, name))
+        except (OSError, ValueError, KeyError, TypeError) as e:   # a file cut short, or edited
+            broken += 1
+            print(f'{name}: not read again: {reports.INK_FILE} is no drawing the grader kept '
+                  f'({type(e).__name__}: {e})')
+            continue
+        if now == was:
+            print(f'{name}: as graded: {now}')
+        else:
+            changed += 1
+            print(f'{name}: now: {now}\n{" " * len(name)}  was: {was or "(no results.json)"}')
+    read = len(kept) - broken
+    print(f'{read} drawing{"" if read == 1 else "s"} read again, {changed} read differently '
+          f'now' + (f'; {broken} not read (above)' if broken else ''))
+    return 1 if broken else 0
+
+
 def main(argv=None):
     args = arguments(sys.argv[1:] if argv is None else argv)
+    if args.reread:
+        return reread_class(args.reread)
     _on_signal(_interrupt)      # SIGTERM stops grading as Ctrl-C does
     problem = sandbox.problem() if args.isolated else None
     if problem:

@@ -9,7 +9,7 @@
     alone    session.alone        executables started together that drew nothing of
                                   the letters, each run alone in a fresh world (a TA's try)
     score    rubric.grade         the points
-    write    reports.write_student  results.json, log.txt and the picture
+    write    reports.write_student  results.json, log.txt, the picture and the ink
 
 Each stage's failure is a value the next ones carry (a Step, a problem in
 Facts), and the row says it. The grader's own failure on a submission
@@ -17,6 +17,8 @@ becomes that student's row, its traceback in their log.txt, never the
 class's end. Nothing here knows of the others graded at once: `place`
 (cli.Place) gives a sandbox and says whether grading was stopped.
 """
+import json
+import os
 import time
 import traceback
 
@@ -118,6 +120,23 @@ def read(drawing, expected):
     if rubrics.drawn(page.readings) == expected:
         return page, None
     return page, read_text(page.writing.ink, expected)
+
+
+def reread(student_folder):
+    """(the letter criterion's line in ID/results.json, '' where none is;
+    its line now): the drawing the grader kept (reports.read_ink) read
+    again as read() reads it, no student code run. Only the ink is read
+    again: the rest of the row (built, launched, ended) stands as graded."""
+    expected, drawing = reports.read_ink(student_folder)
+    page, ocr = read(drawing, expected)
+    now = rubrics.letter_line(rubrics.Facts.of_drawing(expected, drawing, page, ocr))
+    try:
+        with open(os.path.join(student_folder, 'results.json')) as f:
+            tests = json.load(f).get('tests', [])
+    except (OSError, ValueError):
+        tests = []
+    title = rubrics.CRITERIA['letter'][0]
+    return next((t.get('output', '') for t in tests if t.get('name') == title), ''), now
 
 
 def each_alone(expected, rubric, box, facts, run):

@@ -1,5 +1,6 @@
 """What the grader hands back: per student, OUT/ID/results.json (Gradescope's
-format), drawing.png and log.txt; per class, grades.csv, junit.xml and
+format), drawing.png, log.txt and ink.json (the drawing, to read again:
+driver.reread); per class, grades.csv, junit.xml and
 report.html, a page that opens from disk. No ROS here."""
 import csv
 import html
@@ -12,12 +13,14 @@ from typing import List, NamedTuple, Optional
 
 from ..isolation.files import safe_name, shown
 from ..reading.ocr import said as ocr_said
+from .observations import Drawing
 from .rubric import Grade, credited, drawn
 
 NOT_GRADED = 'not graded'
 CSV_COLUMNS = ['id', 'name', 'expected', 'drawn', 'score', 'max_score', 'verdict', 'reason']
 HEAD, TAIL = 15, 60          # lines kept of a step's output at its start and its end
 LOG_LINE = 1000              # characters kept of one line of log.txt
+INK_FILE = 'ink.json'        # OUT/ID/: the drawing the letters were read from
 TERMINAL_CODES = re.compile(r'\x1b\[[0-9;?]*[A-Za-z]|\x1b\][^\x07]*\x07|\r')
 
 
@@ -92,10 +95,11 @@ def write_results(path, row: Row):
 
 
 def write_student(out, row: Row, facts, sections):
-    """OUT/ID/: drawing.png, log.txt (`sections`: (title, text)) and
-    results.json: the row, its picture's path in it. No picture costs no
+    """OUT/ID/: drawing.png, log.txt (`sections`: (title, text)), ink.json
+    and results.json: the row, its picture's path in it. No picture costs no
     row: the row's warning says why."""
     os.makedirs(folder(out, row.id), exist_ok=True)
+    write_ink(folder(out, row.id), row.expected, facts.drawing)
     try:
         row = row._replace(picture=picture(out, row.id, facts))
     except Exception as e:      # Qt could not paint it: the row stands
@@ -103,6 +107,25 @@ def write_student(out, row: Row, facts, sections):
     write_log(out, row.id, sections)
     write_results(os.path.join(folder(out, row.id), 'results.json'), row)
     return row
+
+
+def write_ink(student_folder, expected, drawing):
+    """ID/ink.json, where there is a drawing with ink: the expected letters
+    and the drawing, every field, each float kept exactly by JSON, so that
+    the ink read again (driver.reread) is the ink read."""
+    if drawing is None or not drawing.strokes:
+        return
+    with open(os.path.join(student_folder, INK_FILE), 'w') as f:
+        json.dump(dict(expected=expected, drawing=drawing._asdict()), f)
+
+
+def read_ink(student_folder):
+    """(expected, Drawing) kept in ID/ink.json; a field a later Drawing
+    added takes its default."""
+    with open(os.path.join(student_folder, INK_FILE)) as f:
+        kept = json.load(f)
+    fields = {k: v for k, v in kept['drawing'].items() if k in Drawing._fields}
+    return kept['expected'], Drawing(**fields)
 
 
 def leaderboard(facts, cpu_pct=None):

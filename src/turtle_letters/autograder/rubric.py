@@ -90,12 +90,17 @@ class Facts(NamedTuple):
     def observed(cls, expected, run, drawing, page, ocr):
         """A run's facts: its steps (session.Run), the drawing seen in it and
         the letters read from that drawing (a reading.page.Page)."""
-        return cls(expected, build=run.build, launch=run.launch, waited=run.waited,
-                   talker=run.talker, drawing=drawing, readings=page.readings,
-                   stuck=run.stuck, limit=run.limit, own_triggers=own_triggers(run.events),
-                   chatter_peak=chatter_peak(run.events), broken=run.broken, ocr=ocr,
-                   limit_s=run.limit_s, writing=page.writing.ink if page.where else None,
-                   where=page.where)
+        return cls.of_drawing(expected, drawing, page, ocr)._replace(
+            build=run.build, launch=run.launch, waited=run.waited, talker=run.talker,
+            stuck=run.stuck, limit=run.limit, own_triggers=own_triggers(run.events),
+            chatter_peak=chatter_peak(run.events), broken=run.broken, limit_s=run.limit_s)
+
+    @classmethod
+    def of_drawing(cls, expected, drawing, page, ocr):
+        """The facts of a drawing and the letters read from it alone (a
+        drawing kept and read again: driver.reread)."""
+        return cls(expected, drawing=drawing, readings=page.readings, ocr=ocr,
+                   writing=page.writing.ink if page.where else None, where=page.where)
 
 
 class Mark(NamedTuple):
@@ -248,6 +253,11 @@ def _right(facts):
     if by_ocr(facts) and len(shapes) == len(facts.expected):
         return list(zip(shapes, facts.expected))
     return [(r, e) for r, e in zip(shapes, facts.expected) if r.letter == e]
+
+
+def letter_line(facts):
+    """The letter criterion's line of feedback, as results.json shows it."""
+    return shown(_letter(facts, None)[1])
 
 
 def _letter(facts, rubric):
