@@ -17,8 +17,6 @@ becomes that student's row, its traceback in their log.txt, never the
 class's end. Nothing here knows of the others graded at once: `place`
 (cli.Place) gives a sandbox and says whether grading was stopped.
 """
-import json
-import os
 import time
 import traceback
 
@@ -130,13 +128,7 @@ def reread(student_folder):
     expected, drawing = reports.read_ink(student_folder)
     page, ocr = read(drawing, expected)
     now = rubrics.letter_line(rubrics.Facts.of_drawing(expected, drawing, page, ocr))
-    try:
-        with open(os.path.join(student_folder, 'results.json')) as f:
-            tests = json.load(f).get('tests', [])
-    except (OSError, ValueError):
-        tests = []
-    title = rubrics.CRITERIA['letter'][0]
-    return next((t.get('output', '') for t in tests if t.get('name') == title), ''), now
+    return reports.criterion_output(student_folder, rubrics.CRITERIA['letter'][0]), now
 
 
 def each_alone(expected, rubric, box, facts, run):

@@ -20,6 +20,7 @@ NOT_GRADED = 'not graded'
 CSV_COLUMNS = ['id', 'name', 'expected', 'drawn', 'score', 'max_score', 'verdict', 'reason']
 HEAD, TAIL = 15, 60          # lines kept of a step's output at its start and its end
 LOG_LINE = 1000              # characters kept of one line of log.txt
+RESULTS_FILE = 'results.json'  # OUT/ID/: the row, in Gradescope's format
 INK_FILE = 'ink.json'        # OUT/ID/: the drawing the letters were read from
 TERMINAL_CODES = re.compile(r'\x1b\[[0-9;?]*[A-Za-z]|\x1b\][^\x07]*\x07|\r')
 
@@ -105,7 +106,7 @@ def write_student(out, row: Row, facts, sections):
     except Exception as e:      # Qt could not paint it: the row stands
         row = row._replace(warning='; '.join(filter(None, [row.warning, f'no picture: {e}'])))
     write_log(out, row.id, sections)
-    write_results(os.path.join(folder(out, row.id), 'results.json'), row)
+    write_results(os.path.join(folder(out, row.id), RESULTS_FILE), row)
     return row
 
 
@@ -126,6 +127,17 @@ def read_ink(student_folder):
         kept = json.load(f)
     fields = {k: v for k, v in kept['drawing'].items() if k in Drawing._fields}
     return kept['expected'], Drawing(**fields)
+
+
+def criterion_output(student_folder, name):
+    """The line of feedback ID/results.json gives the criterion `name`; ''
+    where it has none, or there is no such file."""
+    try:
+        with open(os.path.join(student_folder, RESULTS_FILE)) as f:
+            tests = json.load(f).get('tests', [])
+    except (OSError, ValueError):
+        return ''
+    return next((t.get('output', '') for t in tests if t.get('name') == name), '')
 
 
 def leaderboard(facts, cpu_pct=None):
