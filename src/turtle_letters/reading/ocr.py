@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 from .ink import box, closed, dash, flooded, squarest_turn, thinned, turned
 from .forms import CLEAN
-from .recognition import TWINS, Reading, twin_farther
+from .recognition import TWINS, Reading, Unfinished, bounded, twin_farther
 from .rows import letters_of, levels, read_blind, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
@@ -119,7 +119,17 @@ def read_text(ink, expected='') -> OcrReading:
     or the whole at any tilt read it at CONFIDENT or more
     (CONFIDENT_TURNED turned or narrowed), else the most confident reading of the ink
     as it lies. A row read as expected carries the strokes' objection, if
-    they see another letter plainly in a place (_objected)."""
+    they see another letter plainly in a place (_objected). The strokes'
+    part in it is bounded (recognition.bounded): cut short, OCR reads no
+    letter, since the strokes could not check it."""
+    with bounded():
+        try:
+            return _read_text(ink, expected)
+        except Unfinished:
+            return OcrReading('', 0.0)
+
+
+def _read_text(ink, expected):
     points = [p for line in ink for p in line]
     if len(points) < 2 or dash(ink, max(1, len(expected))) or \
             flooded(ink, max(1, len(expected))):

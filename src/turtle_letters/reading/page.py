@@ -12,7 +12,7 @@ from typing import List, NamedTuple
 import numpy
 
 from .ink import box, samples
-from .recognition import Reading
+from .recognition import Reading, bounded
 from .rows import in_colours, read_row, without_specks
 
 EDGE = 0.05         # share of the ink's larger side within which a frame's points lie of its box
@@ -43,7 +43,13 @@ def read_page(ink, looks, expected) -> Page:
     as the simulator recorded them, or none): the canvas whole (_read);
     where that does not read them all, the writing without a frame round it,
     then its top line of writing (writing_on), the first reading the most
-    letters in place kept, where it reads more than the canvas whole."""
+    letters in place kept, where it reads more than the canvas whole. Its
+    cost is bounded (recognition.bounded)."""
+    with bounded():
+        return _read_page(ink, looks, expected)
+
+
+def _read_page(ink, looks, expected):
     page = Page(_read(ink, looks, expected), Writing(ink, looks), '')
     if _in_place(page.readings, expected) == len(expected):
         return page

@@ -15,6 +15,8 @@ as many as there are. Travel with the pen up is no part of it; a cadet who
 retraces strokes to reach the next one loses nothing either, since
 retraced ink lies on the strokes.
 """
+import contextlib
+import contextvars
 import functools
 import math
 import string
@@ -57,6 +59,44 @@ DOUBTFUL_BOX = (0.3, 0.5)
 # is that letter drawn backwards: a turtle's R with its bowl left of its stem fit a
 # script family's R within its 10% exactly, and mirrored back, a turtle's R within 3%.
 MIRRORED = 0.5
+# Fittings (bounded()) one reading of a canvas builds at most, by the strokes or for OCR's
+# cuts: the recognition benchmark's costliest drawing built 1,308 (about 5 s here).
+FITTINGS = 2500
+
+
+class Unfinished(Exception):
+    """A reading's effort (bounded()) was spent before the reading ended."""
+
+
+class Effort:
+    """The Fittings a reading may still build: each is a distance grid of
+    the ink and every candidate's bound on it, most of a reading's time."""
+
+    def __init__(self, fittings):
+        self.left = fittings
+
+    def spend(self):
+        if self.left <= 0:
+            raise Unfinished()
+        self.left -= 1
+
+
+_effort = contextvars.ContextVar('effort', default=None)    # the Effort of bounded(), if any
+
+
+@contextlib.contextmanager
+def bounded(fittings=None):
+    """Within it, reading builds at most `fittings` Fittings (the Effort
+    yielded counts them), and the next raises Unfinished: the cost of
+    reading a canvas is bounded, whatever it holds, by a count rather than
+    a clock, so that a drawing reads the same on any machine. (None:
+    FITTINGS.)"""
+    effort = Effort(FITTINGS if fittings is None else fittings)
+    token = _effort.set(effort)
+    try:
+        yield effort
+    finally:
+        _effort.reset(token)
 
 
 class Fit(NamedTuple):
@@ -218,6 +258,9 @@ def _fits(ink, letters, beat=None, refined=REFINED) -> Dict[str, _Found]:
     if h <= 0 or w > WIDEST * h:      # a dash, or a dot (an outline's middle may be one)
         return {}
     drawn = (sampled([line for line in ink if line], CELL * h / 2) - (x, y)) / h
+    effort = _effort.get()
+    if effort is not None:
+        effort.spend()
     fitting = Fitting(drawn, w / h, letters)
     bounds = fitting.bounds()
     candidates = templates().candidates

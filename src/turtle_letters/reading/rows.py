@@ -24,7 +24,7 @@ from scipy.spatial import cKDTree
 
 from .ink import box, closed, dash, flooded, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
-from .recognition import MOST_TILT, SAMPLE, TILTS, Reading, read
+from .recognition import MOST_TILT, SAMPLE, TILTS, Reading, Unfinished, read
 
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
@@ -401,26 +401,43 @@ def read_row(ink, expected='') -> List[Reading]:
     height reads only as Row.reading says (a small o after a J does; a
     quarter of an S's curve beside a whole U is no I). A flood of ink
     (ink.flooded) is no letter, nor a shape of one, and nor is a dash
-    (ink.dash: a line driven level). A narrow row is one letter (narrow)."""
+    (ink.dash: a line driven level). A narrow row is one letter (narrow).
+    Where the reading's effort is spent (recognition.bounded), the ways
+    read whole before then stand, and none read is no letter."""
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
+    unread = [Reading(None, None, {}) for _ in range(max(1, count))]
     if flooded(ink, max(1, count)) or dash(ink, max(1, count)):
-        return [Reading(None, None, {}) for _ in range(max(1, count))]
-    if count <= 1 or narrow(ink):
-        return [Row(ink).reading(ink, exact=expected[:1] if isinstance(expected, str) else '')]
-    if not isinstance(expected, str):
-        row = Row(ink)
-        return [row.reading(group) for group in apart(ink)]
-    best, ways = None, levels(ink, len(expected))
-    for tilt, centre, level in ways:
-        floor = -1 if best is None else _score(best, expected)[0]
-        back = functools.partial(_turned_back, tilt=tilt, centre=centre, slope=ways[0][0])
-        readings = _read_letters(row_of(level), expected, floor, back)
-        if readings is not None:
-            if best is None or _score(readings, expected) > _score(best, expected):
-                best = readings
-        if _score(best, expected)[0] == len(expected):
-            break
+        return unread
+    try:
+        if count <= 1 or narrow(ink):
+            return [Row(ink).reading(ink, exact=expected[:1] if isinstance(expected, str) else '')]
+        if not isinstance(expected, str):
+            row = Row(ink)
+            return [row.reading(group) for group in apart(ink)]
+    except Unfinished:
+        return unread
+    return _best_way(ink, expected) or unread
+
+
+def _best_way(ink, expected):
+    """The readings of the way (levels) that reads the most of `expected` in
+    place, of those read whole before the reading's effort was spent; None
+    where none was."""
+    best = None
+    try:
+        ways = levels(ink, len(expected))
+        for tilt, centre, level in ways:
+            floor = -1 if best is None else _score(best, expected)[0]
+            back = functools.partial(_turned_back, tilt=tilt, centre=centre, slope=ways[0][0])
+            readings = _read_letters(row_of(level), expected, floor, back)
+            if readings is not None:
+                if best is None or _score(readings, expected) > _score(best, expected):
+                    best = readings
+            if _score(best, expected)[0] == len(expected):
+                break
+    except Unfinished:
+        pass
     return best
 
 

@@ -95,3 +95,49 @@ def test_a_piece_of_a_letter_above_the_rest_is_no_line_of_writing():
     assert writing_on(ink, []) == []
     assert [c for c in string.ascii_uppercase if read_page(ink, [], c).readings[0].letter == c] \
         == ['K']
+
+
+@pytest.fixture
+def rows_afresh():
+    """No Row worked out before (rows.row_of keeps the last few, and a Row
+    its fits): each reading builds every fitting it needs."""
+    from turtle_letters.reading import rows
+    rows._row.cache_clear()
+    yield rows
+    rows._row.cache_clear()
+
+
+def test_a_row_read_in_fewer_fittings_than_it_takes_reads_none_it_did_not_finish(rows_afresh):
+    """A roman triplex ZT, its letters touching, is cut to be read: over a
+    hundred fittings. Bounded by the count it took, it reads the same;
+    bounded by a quarter of it, the reading stops there and reads no
+    letter it did not finish, and nothing escapes it."""
+    from support.glyph_rows import touching
+    from turtle_letters.reading.recognition import bounded
+    ink = touching('rowmant', 'ZT')
+
+    def read(fittings):
+        rows_afresh._row.cache_clear()
+        with bounded(fittings) as effort:
+            return ''.join(r.letter or '?' for r in rows_afresh.read_row(ink, 'ZT')), effort.left
+    whole, left = read(10 ** 6)
+    taken = 10 ** 6 - left
+    assert whole == 'ZT' and taken > 100
+    assert read(taken) == ('ZT', 0)
+    assert read(taken // 4) == ('??', 0)
+
+
+def test_past_its_bound_a_canvas_reads_no_letter_by_either_reader(rows_afresh, monkeypatch):
+    """read_page and OCR's read_text each bound their reading by
+    recognition.FITTINGS: the touching ZT that both read, set to 3, reads
+    no letter by the strokes, and OCR, whose cuts the strokes make and
+    check, reads none either; neither raises."""
+    from support.glyph_rows import touching
+    from turtle_letters.reading import recognition
+    from turtle_letters.reading.ocr import read_text
+    ink = touching('rowmant', 'ZT')
+    assert letters(read_page(ink, [], 'ZT')) == 'ZT' and read_text(ink, 'ZT').text == 'ZT'
+    rows_afresh._row.cache_clear()
+    monkeypatch.setattr(recognition, 'FITTINGS', 3)
+    assert letters(read_page(ink, [], 'ZT')) == '??'
+    assert read_text(ink, 'ZT').text == ''
