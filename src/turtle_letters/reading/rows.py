@@ -500,10 +500,19 @@ def _read_letters(row, expected, floor=-1, back=lambda reading: reading):
     beat = floor if best is None else _score(best, expected)[0]
     if _hoped(row, whole, expected) < max(1, beat):
         return best
-    whole = [back(row.reading(group, exact=letter))
+    whole = [_clean_only(back(row.reading(group, exact=letter)))
              for (group, _), letter in zip(whole, expected)]
     return whole if best is None or _score(whole, expected)[0] >= _score(best, expected)[0] \
         else best
+
+
+def _clean_only(reading):
+    """`reading`, its letter dropped unless it reads within CLEAN: ink read as
+    fewer letters than expected may be two of them touching (a roman IQ,
+    read whole, fit a Q within 10% of its height)."""
+    if reading.letter is None or reading.best.fit <= CLEAN:
+        return reading
+    return Reading(None, reading.best, reading.fits)
 
 
 def _confirmed(row, expected, readings, ahead):

@@ -720,6 +720,15 @@ def test_one_stroke_is_one_letter_however_many_are_expected(expected, credited, 
     assert [r.letter for r in readings if r.letter] == ['I']
 
 
+def test_ink_read_as_fewer_letters_than_expected_credits_only_a_clean_letter():
+    """A roman simplex IQ, touching: read whole, the two are a Q within 10%
+    of its height. Graded against QR, that Q, past CLEAN, was credited in
+    the first place; now no letter is. Against its own IQ it reads IQ."""
+    ink = touching('rowmans', 'IQ')
+    assert [r.letter for r in read_row(ink, 'QR')] == [None]
+    assert ''.join(r.letter for r in read_row(ink, 'IQ')) == 'IQ'
+
+
 @pytest.mark.parametrize('apart', [0.35, 0.45, 0.6])
 def test_two_strokes_side_by_side_narrower_than_a_fifth_of_their_height_are_two_is(apart):
     """Two I's 3 m high, `apart` m apart: a row narrower than a fifth of
