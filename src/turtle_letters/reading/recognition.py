@@ -70,7 +70,7 @@ class Unfinished(Exception):
 
 class Effort:
     """The Fittings a reading may still build: each is a distance grid of
-    the ink and every candidate's bound on it, most of a reading's time."""
+    the ink and every candidate's bound on it, most of a slow row's time."""
 
     def __init__(self, fittings):
         self.left = fittings
