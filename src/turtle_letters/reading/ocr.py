@@ -97,18 +97,20 @@ def _read_picture(ink, expected, needed=CONFIDENT):
     as a line A, as a letter LZ; DejaVu's outlines read 6 and 9 of 26 as
     lines, 21 and 22 filled.)"""
     modes = ('SINGLE_WORD', 'SINGLE_CHAR' if len(expected) == 1 else 'SINGLE_LINE')
-    pictures = [(picture(ink), mode) for mode in modes]
-    if any(closed(line, box([p for line in ink for p in line])[3]) for line in ink):
-        pictures += [(picture(ink, filled=True), mode) for mode in modes]
+    height = box([p for line in ink for p in line])[3]
     first = None
-    for image, mode in pictures:
-        api = _api(mode)
-        api.SetImage(image)
-        text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
-        reading = (text, float(api.MeanTextConf()) if text else 0.0)
-        if text == expected and reading[1] >= needed:
-            return reading
-        first = first or reading
+    for filled in (False, True):
+        if filled and not any(closed(line, height) for line in ink):
+            break
+        image = picture(ink, filled)      # drawn once for both modes, only when asked
+        for mode in modes:
+            api = _api(mode)
+            api.SetImage(image)
+            text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
+            reading = (text, float(api.MeanTextConf()) if text else 0.0)
+            if text == expected and reading[1] >= needed:
+                return reading
+            first = first or reading
     return first
 
 

@@ -326,6 +326,17 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     return reading
 
 
+def best_fit(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
+             refined=REFINED) -> Optional[Fit]:
+    """read()'s best fit, the letter not decided: none of read()'s checks of
+    the letter read (a mirror image read for _backwards is as many fittings
+    again), for a row's cuts, which ask only how well a part fits."""
+    points = [p for line in ink for p in line]
+    if len(points) < 2 or box(points)[3] <= 0:
+        return None
+    return _read_either(ink, letters, tilts, finer, refined).best
+
+
 def _backwards(ink, reading, tilts, finer):
     """Whether the letter read, past CLEAN, is drawn backwards: the ink's
     mirror image fits it within MIRRORED times as far off."""

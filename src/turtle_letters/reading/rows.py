@@ -24,7 +24,7 @@ from scipy.spatial import cKDTree
 
 from .ink import box, closed, dash, flooded, inside, outline, samples, turned
 from .forms import CLEAN, candidates, templates
-from .recognition import MOST_TILT, SAMPLE, TILTS, Reading, Unfinished, read
+from .recognition import MOST_TILT, SAMPLE, TILTS, Reading, Unfinished, best_fit, read
 
 GAP = 0.1           # clear space between two letters' ink, share of the height of the row
 SPECK = 0.1         # ink set apart, smaller than this share of all the ink's extent: a speck, no letter
@@ -75,8 +75,8 @@ class Row:
         if key not in self._fits:
             part = self.between(left, right)
             letters = string.ascii_uppercase if letter == ANY else letter
-            reading = read(part, letters, NEAR_TILTS, (), refined=1) if part else None
-            self._fits[key] = reading.best.fit if reading and reading.best else math.inf
+            best = best_fit(part, letters, NEAR_TILTS, (), refined=1) if part else None
+            self._fits[key] = best.fit if best else math.inf
         return self._fits[key]
 
     def letters(self, cuts):
