@@ -60,7 +60,7 @@ DOUBTFUL_BOX = (0.3, 0.5)
 # script family's R within its 10% exactly, and mirrored back, a turtle's R within 3%.
 MIRRORED = 0.5
 # Fittings (bounded()) one reading of a canvas builds at most, by the strokes or for OCR's
-# cuts: the recognition benchmark's costliest drawing built 1,308 (about 5 s here).
+# cuts: the recognition benchmark's costliest drawing built 1,308 (1,098 since best_fit).
 FITTINGS = 2500
 
 
