@@ -592,6 +592,25 @@ def test_a_turtles_r_of_a_round_bowl_is_an_r_and_mirrored_no_r(radius, reach, ti
     assert read(turned([[(-x, y) for x, y in r]], tilt, (0.0, 0.0))).letter != 'R'
 
 
+def test_a_parts_best_fit_is_reads_found_without_reading_its_mirror_image():
+    """A row's cuts ask only how well a part fits (rows.Row.fit): best_fit
+    is read()'s best fit, built without read()'s check that the letter is
+    not drawn backwards. A turtle's R mirrored, which read() refuses as an
+    R drawn backwards by reading its mirror image too, fits the same, in
+    fewer fittings."""
+    from turtle_letters.reading.recognition import best_fit, bounded
+    r = driven([turn(PI / 2), forward(3), turn(-PI / 2), arc(0.75, -PI),
+                turn(PI - math.atan2(1.5, 0.9)), forward(math.hypot(0.9, 1.5))])
+    backwards = [[(-x, y) for x, y in r]]
+    with bounded(10 ** 6) as effort:
+        reading = read(backwards)
+    by_read = 10 ** 6 - effort.left
+    with bounded(10 ** 6) as effort:
+        fit = best_fit(backwards)
+    assert reading.letter is None and reading.best.letter == 'R'
+    assert fit == reading.best and 10 ** 6 - effort.left < by_read
+
+
 @pytest.mark.parametrize('spur', [0.2, 0.35])
 @pytest.mark.parametrize('top', [0.7, 0.8])
 @pytest.mark.parametrize('lean', [0.0, 0.1])
