@@ -50,13 +50,21 @@ def _tasks(pid):
         return []
 
 
-def _reads_stdin(task):
-    """Whether the thread at /proc path `task` is in read(2) of file 0."""
-    try:
-        with open(f'{task}/syscall') as f:
-            return f.read().split()[:2] == [READ, '0x0']
-    except OSError:     # gone, or not ours to look at
-        return False
+def _reads_stdin(task, looks=10):
+    """Whether the thread at /proc path `task` is in read(2) of file 0. The
+    kernel says "running" of a thread woken and not yet asleep again, as a
+    reader is when another beside it on the terminal takes the line: such a
+    thread is looked at again, for up to 0.1 s."""
+    for _ in range(looks):
+        try:
+            with open(f'{task}/syscall') as f:
+                called = f.read().split()
+        except OSError:     # gone, or not ours to look at
+            return False
+        if called[:1] != ['running']:
+            return called[:2] == [READ, '0x0']
+        time.sleep(0.01)
+    return False
 
 
 def _commands():

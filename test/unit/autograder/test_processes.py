@@ -102,10 +102,15 @@ def test_a_shell_script_of_the_submission_is_seen_running_until_it_ends(tmp_path
 
 
 def _until(condition, seconds=10.0):
+    """Whether `condition` was seen to hold within `seconds`: the look that
+    saw it is the answer, not a second one (a terminal's readers move)."""
     deadline = time.monotonic() + seconds
-    while not condition() and time.monotonic() < deadline:
+    while True:
+        if condition():
+            return True
+        if time.monotonic() > deadline:
+            return False
         time.sleep(0.05)
-    return condition()
 
 
 def test_a_node_waiting_for_a_line_on_its_terminal_is_seen_until_it_has_one():
