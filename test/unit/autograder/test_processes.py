@@ -8,6 +8,7 @@ import time
 
 from turtle_letters.autograder.processes import (Capped, ControllerCpu, Reader, RunningScripts,
                                                 controller_processes, reading_input)
+from turtle_letters.autograder.session import wait_until
 
 
 def test_the_start_and_end_are_kept_and_the_middle_counted():
@@ -101,18 +102,6 @@ def test_a_shell_script_of_the_submission_is_seen_running_until_it_ends(tmp_path
         launch.wait()
 
 
-def _until(condition, seconds=10.0):
-    """Whether `condition` was seen to hold within `seconds`: the look that
-    saw it is the answer, not a second one (a terminal's readers move)."""
-    deadline = time.monotonic() + seconds
-    while True:
-        if condition():
-            return True
-        if time.monotonic() > deadline:
-            return False
-        time.sleep(0.05)
-
-
 def test_a_node_waiting_for_a_line_on_its_terminal_is_seen_until_it_has_one():
     """Started as roslaunch starts nodes (`__name:=`), on a terminal: a node
     at a prompt (input()) is seen to read its standard input; one that
@@ -131,11 +120,11 @@ def test_a_node_waiting_for_a_line_on_its_terminal_is_seen_until_it_has_one():
     os.close(slave)
     try:
         for node in nodes:
-            assert _until(lambda: reading_input(node.pid)), 'its prompt waits'
+            assert wait_until(lambda: reading_input(node.pid), 10.0), 'its prompt waits'
         os.write(master, b'A\r')        # read by one of the two
-        assert _until(lambda: sum(reading_input(n.pid) for n in nodes) == 1)
+        assert wait_until(lambda: sum(reading_input(n.pid) for n in nodes) == 1, 10.0)
         os.write(master, b'B\r')
-        assert _until(lambda: not any(reading_input(n.pid) for n in nodes)), 'they sleep'
+        assert wait_until(lambda: not any(reading_input(n.pid) for n in nodes), 10.0), 'they sleep'
     finally:
         for node in nodes:
             node.kill()
