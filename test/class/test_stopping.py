@@ -129,21 +129,38 @@ def test_in_a_terminal_a_bar_shows_the_class_going_and_ctrl_c_stops_it(tmp_path)
     assert leftovers(before) == ([], [])
 
 
-def test_a_second_ctrl_c_forces_it_out_and_still_leaves_nothing(tmp_path):
-    before = sandbox_processes()
-    grading = started_grading(*a_class(tmp_path, 2))
+def ctrl_c_twice_once_a_sandbox_runs(grading, poll, then):
+    """Wait (looking every `poll` s) for a sandbox, `then` s more, and press
+    Ctrl-C twice; what stop() returns."""
     deadline = time.monotonic() + 60
     while not sandbox_running() and time.monotonic() < deadline:
-        time.sleep(0.2)
-    time.sleep(2)
+        time.sleep(poll)
+    time.sleep(then)
 
     def twice():
         os.killpg(grading.pid, signal.SIGINT)
         time.sleep(0.02)
         os.killpg(grading.pid, signal.SIGINT)
-    code, took, printed = stop(grading, twice)
+    return stop(grading, twice)
+
+
+def test_a_second_ctrl_c_forces_it_out_and_still_leaves_nothing(tmp_path):
+    before = sandbox_processes()
+    grading = started_grading(*a_class(tmp_path, 2))
+    code, took, printed = ctrl_c_twice_once_a_sandbox_runs(grading, poll=0.2, then=2)
     assert code == 130 and took < STOPS_WITHIN, printed
     assert 'forced' in printed and 'Traceback' not in printed, printed
+    assert leftovers(before) == ([], [])
+
+
+def test_two_ctrl_c_as_it_starts_leave_nothing(tmp_path):
+    """At the first namespace it makes (its trial of the sandbox, or the
+    first student's), two Ctrl-C: out in words, nothing left."""
+    before = sandbox_processes()
+    grading = started_grading(*a_class(tmp_path, 1))
+    code, took, printed = ctrl_c_twice_once_a_sandbox_runs(grading, poll=0.01, then=0)
+    assert code == 130 and took < STOPS_WITHIN, printed
+    assert 'SIGINT' in printed and 'Traceback' not in printed, printed
     assert leftovers(before) == ([], [])
 
 

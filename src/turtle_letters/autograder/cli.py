@@ -17,6 +17,7 @@ for the students graded so far and marked incomplete.
 import argparse
 import concurrent.futures
 import contextlib
+import ctypes
 import json
 import os
 import queue
@@ -37,6 +38,7 @@ from .roster import expected as expected_of
 from .roster import read as read_roster
 
 GRADESCOPE = '/autograder'
+PR_SET_CHILD_SUBREAPER = 36      # linux/prctl.h
 
 
 def arguments(argv):
@@ -271,6 +273,7 @@ def _force(place):
     """A second Ctrl-C: end what runs and remove the sandboxes at once, and leave."""
     def force(number, _):
         print('grade_class.py: forced: no class files written', file=sys.stderr, flush=True)
+        _adopt_orphans()
         place.stop()
         with place.lock:        # every sandbox whole: none is being made or removed now
             for box in place.boxes:
@@ -280,9 +283,17 @@ def _force(place):
     return force
 
 
-def _reap_children(seconds=2.0):
-    """Waits for the children just killed, so that none is left for init to
-    reap (a slow init shows them a while longer)."""
+def _adopt_orphans():
+    """The grader made the reaper of its descendants left without a parent
+    (PR_SET_CHILD_SUBREAPER): a sandbox's own init, its bubblewrap killed,
+    then ends as the grader's child, and only once all in it have ended."""
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0)
+
+
+def _reap_children(seconds=10.0):
+    """Waits for the children just killed and the orphans adopted, so that
+    none is left for init to reap (a slow init shows them a while longer;
+    CI once saw a sandbox's process still ending as the grader left)."""
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
         try:
@@ -428,11 +439,24 @@ def main(argv=None):
     if args.reread:
         return reread_class(args.reread)
     _on_signal(_interrupt)      # SIGTERM stops grading as Ctrl-C does
-    problem = sandbox.problem() if args.isolated else None
+    try:
+        return _checked_and_graded(args)
+    except KeyboardInterrupt as stopped:    # before grading, or while its files are written
+        _on_signal(signal.SIG_IGN)          # it is leaving: another Ctrl-C changes nothing
+        print(f'\ngrade_class.py: {stopped}: stopped', file=sys.stderr)
+        return EXIT[str(stopped)]
+
+
+def _checked_and_graded(args):
+    """The sandbox tried and what earlier graders left removed, each whole
+    (Ctrl-C held meanwhile: a second one once left the trial's namespace
+    and mount), then the class or the one submission graded."""
+    with _signals_held():
+        problem = sandbox.problem() if args.isolated else None
+        swept = stale.sweep() if args.isolated and not problem else ''
     if problem:
         print(f'grade_class.py: {problem}; nothing was graded', file=sys.stderr)
         return 2
-    swept = stale.sweep() if args.isolated else ''
     if swept:
         print(f'grade_class.py: {swept}', file=sys.stderr)
     try:
@@ -443,3 +467,18 @@ def main(argv=None):
     if args.gradescope:
         return grade_gradescope(args, rubric)
     return grade_one(args, rubric) if args.one else grade_class(args, rubric)
+
+
+@contextlib.contextmanager
+def _signals_held():
+    """Ctrl-C and SIGTERM noted while the block runs, and raised once it
+    has ended. (Blocking them does not do: a thread of a library's that
+    leaves them unblocked takes them, and the main thread still raises.)"""
+    noted = []
+    before = _on_signal(lambda number, _: noted.append(signal.Signals(number).name))
+    try:
+        yield
+    finally:
+        _on_signal(*before)
+    if noted:
+        raise KeyboardInterrupt(noted[0])
