@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """An SVG file's line art, sent on the controller's ~svg topic and drawn in
 smooth mode: every vertex of the flattened strokes reached, the path on the
-strokes and the pen-up travel (a late command may run a tick past a vertex,
+strokes and the pen-up travel (a stray only where a late command ran on,
 as in test_words), and the picture in the file's stroke colours."""
 import math
 import os
@@ -15,12 +15,11 @@ from std_msgs.msg import String
 from std_srvs.srv import Trigger
 from turtlesim.msg import Pose as PoseMsg
 
-from support.accuracy import distances_off, touches_a_wall, vertex_errors
+from support.accuracy import strays, touches_a_wall, vertex_errors
 from support.nodes import LogWatch, PoseRecorder, wait_until
 from support.pictures import pixel
 from turtle_letters.letters import svgart
 from turtle_letters.letters.plan import plan_picture
-from turtle_letters.motion.executors import SIM_TICK
 from turtle_letters.letters.geometry import PlannedPose
 from turtle_letters.settings import Settings
 from turtle_letters.letters.sheet import Sheet
@@ -52,12 +51,12 @@ class SvgLineArt(unittest.TestCase):
         for stroke in cls.plan.strokes:
             cls.travel.append([here, stroke[0]])
             here = stroke[-1]
-        cls.run_on = 3 * settings.linear_speed * SIM_TICK
         wait_until(lambda: logs.count('Done drawing', CONTROLLER)
                    or logs.count('Refused', CONTROLLER), 250, "the controller's Done line")
         cls.refused = logs.count('Refused', CONTROLLER)
         poses.wait_until_still(0, 10, still_for=0.5)
-        cls.path = poses.path()
+        cls.poses_drawn = poses.since(0)
+        cls.path = [(p.x, p.y) for p in cls.poses_drawn]
         cls.logs, cls.poses, cls.pub = logs, poses, pub
 
     def test_the_file_is_drawn(self):
@@ -84,13 +83,12 @@ class SvgLineArt(unittest.TestCase):
         self.assertEqual(missed, [], 'vertices missed (m) by mm')
 
     def test_the_path_keeps_to_the_strokes_and_travel_moves(self):
-        off = distances_off(self.path, self.plan.strokes, self.travel)
-        corners = [v for stroke in self.plan.strokes for v in stroke]
-        unexplained = [(round(p[0], 3), round(p[1], 3), round(d * 1000, 2))
-                       for p, d in zip(self.path, off) if d >= TOLERANCE
-                       and min(math.dist(p, c) for c in corners) > self.run_on]
-        self.assertEqual(unexplained, [], 'poses off the strokes (mm) away from any vertex')
-        self.assertLess(max(off), self.run_on)
+        found = strays(self.poses_drawn, self.plan.strokes + self.travel, TOLERANCE)
+        own = [(round(p.x, 3), round(p.y, 3), round(worst * 1000, 2))
+               for p, worst, late in found if not late]
+        self.assertEqual(own, [], 'strays (m, worst mm off) begun by a new command')
+        vertices = sum(len(stroke) for stroke in self.plan.strokes)
+        self.assertLess(len(found), vertices / 4, f'{len(found)} strays, {vertices} vertices')
         self.assertFalse(touches_a_wall(self.path))
 
     def test_the_picture_has_the_files_stroke_colours(self):

@@ -55,6 +55,34 @@ def distances_off(path, strokes, travel):
     return [distance_to_lines(q, strokes + travel) for q in path]
 
 
+def strays(poses, lines, tolerance):
+    """Each run of turtlesim's `poses` (in order) `tolerance` m or more off
+    `lines`: [its first pose, how far off it goes (m), whether it began with
+    the tick before's command used again]. A late command does that (the
+    contract: a command holds until another comes): the turtle runs on along
+    its move, past a vertex or off a curve, for as many ticks as the command
+    is late, which load does not bound. A stray begun by a new command is
+    the controller's own doing."""
+    found, inside = [], False
+    for i, pose in enumerate(poses):
+        off = distance_to_lines((pose.x, pose.y), lines)
+        if off < tolerance:
+            inside = False
+        elif inside:
+            found[-1][1] = max(found[-1][1], off)
+        else:
+            inside = True
+            found.append([pose, off, i > 0 and _same_command(poses[i - 1], pose)])
+    return found
+
+
+def _same_command(before, pose):
+    """Whether turtlesim moved `pose` by the command it moved `before` by
+    (a pose carries its tick's command: hypot(linear.x, linear.y), angular.z)."""
+    return (before.linear_velocity, before.angular_velocity) == \
+        (pose.linear_velocity, pose.angular_velocity)
+
+
 def worst_off(path, strokes, travel):
     """How far the path strays from the strokes and travel segments, m."""
     return max(distances_off(path, strokes, travel))

@@ -212,8 +212,9 @@ class SmoothExecutor:
 
     Meanwhile the turtle turns to face along the edge, by at most TURN_PER_TICK
     a tick. A command that comes late (a busy machine) finds turtlesim using
-    the one before once more: the turtle runs on one tick along its line, at
-    most a tick's move (linear_speed x 16 ms) past a vertex. A turn used twice
+    the one before once more: the turtle runs on along its line, a tick's
+    move (linear_speed x 16 ms) past a vertex for each tick it is late, and
+    heads from there for the next vertex. A turn used twice
     would also bend the next move off the line, by as much as that turn: hence
     small turns. Nothing else is given up to lateness, since slowing down
     before each vertex to make up for it would cost more time than it saves.
