@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 from .ink import box, closed, dash, flooded, squarest_turn, thinned, turned
 from .forms import CLEAN
-from .recognition import TWINS, Reading, Unfinished, bounded, twin_farther
+from .recognition import TWINS, Reading, Unfinished, bounded, plainly_other, twin_farther
 from .rows import letters_of, levels, read_blind, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
@@ -271,14 +271,6 @@ def _twin_fits(reading, expected):
         return False
     own = reading.fits.get(expected)
     return reading.letter == best.letter or (own is not None and twin_farther(own, best))
-
-
-def plainly_other(reading, expected):
-    """Whether the strokes' `reading` (recognition.Reading) is another
-    letter than `expected`, read within CLEAN, where `expected` does not
-    fit within CLEAN too."""
-    return reading.letter not in (None, expected) and reading.best.fit <= CLEAN and \
-        not (expected in reading.fits and reading.fits[expected].fit <= CLEAN)
 
 
 def said(reading: OcrReading) -> str:

@@ -407,6 +407,13 @@ def _read(ink, letters, tilts, finer, refined) -> Reading:
     return Reading(letter, best, placed_fits)
 
 
+def plainly_other(reading, expected):
+    """Whether `reading` (a Reading) is another letter than `expected`,
+    read within CLEAN, where `expected` does not fit within CLEAN too."""
+    return reading.letter not in (None, expected) and reading.best.fit <= CLEAN and \
+        not (expected in reading.fits and reading.fits[expected].fit <= CLEAN)
+
+
 def upright_twin(best, fits):
     """`best`, or its twin (TWINS) where that reads too, lying about a
     quarter-turn from it and TWIN_LEVEL nearer level."""

@@ -883,3 +883,14 @@ def test_the_letters_of_a_sloped_row_are_read_near_its_level():
     read within ROW_TILTS of its row's level."""
     ink = turned(cadets('WMP', 1.727, 0.018), 39.2, (0.0, 0.0))
     assert ''.join(r.letter or '?' for r in read_row(ink, 'WMP')) == 'WMP'
+
+
+def test_a_row_read_whole_for_other_initials_earns_no_letter_the_row_read_blind_denies():
+    """A cut sought for a letter that is not there may find ink that fits
+    it loosely though every letter reads: a cadet's BP graded against EP
+    read its B as an E within 8% of its height, credited in place (the
+    recognition benchmark's row 2465). Cut not knowing the roster, the row
+    reads BP, its B within 2%: the E is none."""
+    ink = turned(cadets('BP', 1.705, -0.0156), 4.59, (0.0, 0.0))
+    assert ''.join(r.letter or '?' for r in read_row(ink, 'EP')) == '?P'
+    assert ''.join(r.letter or '?' for r in read_row(ink, 'BP')) == 'BP'
