@@ -404,7 +404,9 @@ def read_row(ink, expected='') -> List[Reading]:
     (ink.flooded) is no letter, nor a shape of one, and nor is a dash
     (ink.dash: a line driven level). A narrow row is one letter (narrow).
     Where the reading's effort is spent (recognition.bounded), the ways
-    read whole before then stand, and none read is no letter."""
+    read whole before then stand, and none read is no letter. A row read
+    whole keeps a loose letter only where the row read blind allows it
+    (_unobjected)."""
     ink = without_specks(ink)
     count = len(expected) if isinstance(expected, str) else expected
     unread = [Reading(None, None, {}) for _ in range(max(1, count))]
@@ -440,11 +442,13 @@ def _unobjected(ink, readings, expected):
     try:
         blind = read_blind(ink, len(expected))
     except Unfinished:
-        blind = None
-    objects = blind is None or all(r.letter for r in blind)
-    return [Reading(None, r.best, r.fits)
-            if k in loose and objects and (blind is None or plainly_other(blind[k], expected[k]))
-            else r for k, r in enumerate(readings)]
+        blind = None        # not checked: not credited
+
+    def denied(k):
+        return blind is None or (all(r.letter for r in blind) and
+                                 plainly_other(blind[k], expected[k]))
+    return [Reading(None, r.best, r.fits) if k in loose and denied(k) else r
+            for k, r in enumerate(readings)]
 
 
 def _best_way(ink, expected):
