@@ -9,10 +9,11 @@ unless it reads confidently as another text as it lies, turned back by
 each of TILTS and by the turn that stands it squarest, then narrowed (a
 letter drawn twice as wide is no print letter to Tesseract); a reading
 of the expected text at CONFIDENT or more (CONFIDENT_TURNED turned or
-narrowed) is kept, else the reading level. (Turned, a J read as an S at
-86%: what reads as something else level is not turned until it reads as
-hoped.)
+narrowed) is kept; else the expected text where the views vote for it
+(_voted); else the reading level. (Turned, a J read as an S at 86%: what
+reads as something else level is not turned until it reads as hoped.)
 """
+import collections
 import os
 import string
 import threading
@@ -31,6 +32,7 @@ TILTS = (0, -15, 15, -30, 30, -45, 45)      # degrees the ink is turned back by 
 NEAR = 2.5          # degrees off within which a turn is as good as another
 NARROWER = (0.7, 0.5)   # shares of its width the ink is read at last: a letter drawn wide
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
+SURE = 95           # Tesseract's confidence in a reading's least sure letter, for a vote (_voted)
 _apis = threading.local()       # Tesseract's handles are not shared between threads
 # Tesseract's OpenMP would take every core while it reads: the grader reads
 # one student's ink while another's timed controller draws on the other core.
@@ -43,6 +45,7 @@ class OcrReading(NamedTuple):
     tilt: float = 0.0       # degrees the ink lies off level
     width: float = 1.0      # share of its width the ink was read at
     objection: str = ''     # the strokes' plainly other letter, read blind ('D in place of L')
+    votes: tuple = ()       # ((text, readings of it), ...): where the readings voted (_voted)
 
 
 def picture(ink, filled=False):
@@ -89,29 +92,44 @@ def _api(mode):
 
 
 def _read_picture(ink, expected, needed=CONFIDENT):
-    """(text, confidence) of the picture of `ink`, read as a word, then as
-    a line of letters or one letter, then (ink with contours) filled, the
-    same two ways: the first reading of `expected` at `needed` or more,
-    else the word's reading. (Each reads some drawings the others miss: a real
-    class's ZA, the Z's foot run into the A, read as a word gave ZA at 93%,
-    as a line A, as a letter LZ; DejaVu's outlines read 6 and 9 of 26 as
-    lines, 21 and 22 filled.)"""
+    """(text, confidence) of the picture of `ink` (_pictures): the first
+    reading of `expected` at `needed` or more, else the word's reading."""
+    first = None
+    for text, confidence, _ in _pictures(ink, expected):
+        if text == expected and confidence >= needed:
+            return text, confidence
+        first = first or (text, confidence)
+    return first
+
+
+def _pictures(ink, expected):
+    """(text, confidence, the least sure letter's confidence where the text
+    is `expected`, else 0) of each reading of the picture of `ink`, in turn:
+    read as a word, then as a line of letters or one letter, then (ink with
+    contours) filled, the same two ways. (Each reads some drawings the
+    others miss: a real class's ZA, the Z's foot run into the A, read as a
+    word gave ZA at 93%, as a line A, as a letter LZ; DejaVu's outlines read
+    6 and 9 of 26 as lines, 21 and 22 filled.)"""
     modes = ('SINGLE_WORD', 'SINGLE_CHAR' if len(expected) == 1 else 'SINGLE_LINE')
     height = box([p for line in ink for p in line])[3]
-    first = None
     for filled in (False, True):
         if filled and not any(closed(line, height) for line in ink):
-            break
+            return
         image = picture(ink, filled)      # drawn once for both modes, only when asked
         for mode in modes:
             api = _api(mode)
             api.SetImage(image)
             text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
-            reading = (text, float(api.MeanTextConf()) if text else 0.0)
-            if text == expected and reading[1] >= needed:
-                return reading
-            first = first or reading
-    return first
+            yield (text, float(api.MeanTextConf()) if text else 0.0,
+                   _least_sure(api) if text and text == expected else 0.0)
+
+
+def _least_sure(api):
+    """Tesseract's confidence (0-100) in the least sure letter it read last."""
+    import tesserocr
+    symbol = tesserocr.RIL.SYMBOL
+    return min((r.Confidence(symbol) for r in tesserocr.iterate_level(api.GetIterator(), symbol)
+                if (r.GetUTF8Text(symbol) or '') in string.ascii_uppercase), default=0.0)
 
 
 def read_text(ink, expected='') -> OcrReading:
@@ -145,19 +163,49 @@ def _read_text(ink, expected):
             return _objected(ink, alone)
     x, y, w, h = box(points)
     drawn, ink = ink, thinned(ink, h / 200)
-    level = None
+    level, votes, surest = None, collections.Counter(), OcrReading('', 0.0)
     for tilt, width in _views(ink):
         upright = turned(ink, -tilt, (x + w / 2, y + h / 2)) if tilt else ink
         if width != 1.0:
             upright = [[(px * width, py) for px, py in line] for line in upright]
-        text, confidence = _read_picture(upright, expected, _needed(tilt, width))
-        if expected and text == expected and confidence >= _needed(tilt, width):
-            return _objected(drawn, OcrReading(text, confidence, float(tilt), width))
+        first = None
+        for text, confidence, sure in _pictures(upright, expected):
+            if expected and text == expected and confidence >= _needed(tilt, width):
+                return _objected(drawn, OcrReading(text, confidence, float(tilt), width))
+            votes[_once(text, expected)] += 1
+            surest = max(surest, OcrReading(text, sure, float(tilt), width),
+                         key=lambda r: r.confidence)
+            first = first or (text, confidence)
         if level is None:
-            level = OcrReading(text, confidence)
-            if confidence >= CONFIDENT:     # it reads as another text as it lies: that is it
+            level = OcrReading(*first)
+            if level.confidence >= CONFIDENT:   # it reads as another text as it lies: that is it
                 return level
-    return level
+    voted = _voted(votes, surest, expected)
+    return _objected(drawn, voted) if voted else level
+
+
+def _once(text, expected):
+    """`text`, a letter read twice taken once where one letter is expected
+    (Tesseract's LSTM reads a wide letter twice over: a DejaVu Sans Bold T
+    stretched and turned read T in 9 readings and TT in 9)."""
+    return text[0] if len(expected) == 1 and len(text) == 2 and text[0] == text[1] else text
+
+
+def _voted(votes, surest, expected):
+    """The expected text, as `surest` read it, where more of the readings
+    (`votes`: each view read as a word and as a letter or line, drawn and
+    filled, up to 40 in all; no letter is no vote) read it than any other
+    text, and one read each of its letters SURE or more; else None.
+    Tesseract's word confidence is 0 for some letters it reads in view
+    after view, each letter 95% sure or more (DejaVu Bold outlines of Z, W,
+    P, X, stretched and turned); taken one by one, a letter that sure is
+    seen in a reading or two where it is not drawn (a V as a W, 99% sure,
+    in 2 readings of 36, as a V in 9)."""
+    rivals = [count for text, count in votes.items() if text not in ('', expected)]
+    if expected and surest.text == expected and surest.confidence >= SURE and \
+            votes[expected] > max(rivals, default=0):
+        return surest._replace(votes=tuple(sorted(votes.items())))
+    return None
 
 
 def _objected(ink, reading):
@@ -252,12 +300,23 @@ def supports(reading: OcrReading, expected: str, strokes=()) -> bool:
     middle line hardly keeps, is an I within 2.2% of its height and a J
     within 6.1%: OCR, J 95% sure, tells the two apart.) Nor is it where OCR
     read the ink turned and the strokes' best fit is the expected letter's
-    twin (recognition.TWINS): turned, a Z is an N to OCR."""
+    twin (recognition.TWINS): turned, a Z is an N to OCR; nor where the
+    views voted for it and the strokes lean to another text (_contradicted)."""
     if not (expected and reading.text == expected and not reading.objection and
             reading.confidence >= _needed(reading.tilt, reading.width)):
         return False
-    return not any(plainly_other(r, e) or (reading.tilt and _twin_fits(r, e))
-                   for r, e in zip(strokes, expected))
+    return not _contradicted(reading, strokes) and not any(
+        plainly_other(r, e) or (reading.tilt and _twin_fits(r, e))
+        for r, e in zip(strokes, expected))
+
+
+def _contradicted(reading, strokes):
+    """Whether `reading` was voted for (_voted) and the strokes' best fits,
+    read or not, spell another text that two readings or more read: the two
+    readers lean each to another text. (A DejaVu Serif Bold O, stretched
+    and turned, read Q in 7 readings of 36 and O in 3, its best fit an O.)"""
+    guess = ''.join(r.best.letter if r.best else '?' for r in strokes)
+    return bool(guess) and guess != reading.text and dict(reading.votes).get(guess, 0) >= 2
 
 
 def _twin_fits(reading, expected):
@@ -278,6 +337,9 @@ def said(reading: OcrReading) -> str:
         return 'OCR reads no letter'
     tilted = f', {abs(reading.tilt):g} degrees off level' if reading.tilt else ''
     narrowed = f', read at {reading.width:.0%} of its width' if reading.width != 1.0 else ''
+    if reading.votes:
+        votes = dict(reading.votes)
+        narrowed += f'; {votes[reading.text]} of {sum(votes.values())} readings of it agree'
     objected = (f', but its strokes, cut not knowing the letters expected, read '
                 f'{reading.objection}') if reading.objection else ''
     return f'OCR reads {reading.text} ({reading.confidence:.0f}% sure{tilted}{narrowed}){objected}'
