@@ -263,11 +263,15 @@ def test_a_block_letter_no_word_reading_is_sure_of_is_read_by_its_views_vote(
     """DejaVu Bold outlines stretched and turned, that Tesseract reads as
     the letter in view after view but never with a word confidence it
     believes: the views vote for the letter, one of them 95% sure of it or
-    more, and it is credited; graded as another letter, nothing is."""
+    more, and it is credited, the row saying so; graded as another letter,
+    nothing is."""
+    from turtle_letters.reading.ocr import said
     from turtle_letters.reading.rows import read_row
     ink = stretched_outline(font, letter, aspect, 3.0, tilt, 0.02)
     reading = read_text(ink, letter)
     assert reading.votes and supports(reading, letter, read_row(ink, letter)), reading
+    assert said(reading).startswith(f'OCR reads {letter} (9') and \
+        'readings of it agree)' in said(reading), said(reading)
     for other in 'NSLQV'.replace(letter, ''):
         assert not supports(read_text(ink, other), other, read_row(ink, other)), other
 
