@@ -9,7 +9,7 @@ unless it reads confidently as another text as it lies, turned back by
 each of TILTS and by the turn that stands it squarest, then narrowed (a
 letter drawn twice as wide is no print letter to Tesseract); a reading
 of the expected text at CONFIDENT or more (CONFIDENT_TURNED turned or
-narrowed) is kept; else the expected text where the views vote for it
+narrowed) is kept; else the expected text where its readings vote for it
 (_voted); else the reading level. (Turned, a J read as an S at 86%: what
 reads as something else level is not turned until it reads as hoped.)
 """
