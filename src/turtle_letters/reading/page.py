@@ -1,28 +1,32 @@
 """Where the letters are on a canvas, as a TA finds them at a glance:
 each in a pen colour of its own where the ink comes in as many colours
 as letters expected, else the ink as a row; and where that does not read
-them, the writing without a frame drawn round it, and the top line of
-writing of several, one above another (a real class's SNB above 002,
-inside a border). Only the top line: a canvas is not searched for the
-letters hoped for, or a student who wrote every letter, a line each,
-would earn any. No ROS here.
+them, the writing without a frame drawn round it, and of several lines
+of writing, one above another, the one with as many letters side by side
+as expected, or nearest that (a real class's SNB above 002, inside a
+border; XAVIERA below a heart, above a line): the top one of those
+alike. One line, chosen by its letters' count, not by what they read: a
+canvas is not searched for the letters hoped for, or a student who wrote
+every letter, a line each, would earn any. No ROS here.
 """
+import math
 from typing import List, NamedTuple
 
 import numpy
 
 from .ink import box, samples
 from .recognition import Reading, bounded
-from .rows import in_colours, read_row, without_specks
+from .rows import apart, in_colours, read_row, without_specks
 
 EDGE = 0.05         # share of the ink's larger side within which a frame's points lie of its box
 ON_EDGE = 0.9       # share of a line's length that lies so: it runs along the box's edges
 FRAMED = 0.75       # share of each side of the box a frame's lines run along, at least
 LINE_GAP = 0.15     # clear space between two lines of writing, share of the taller one's height
-# The top line of writing stands at least this share as high as the tallest: a piece
+# The line of writing read stands at least this share as high as the tallest: a piece
 # of a letter above the rest is none (a gothic K tilted 25 degrees, its flourish a sixth
 # of its height, was a line of its own, read as a T).
 TOP_LINE = 0.5
+LETTER_WIDTH = 0.7  # share of its height a letter is wide, to count the letters of a line by
 
 
 class Writing(NamedTuple):
@@ -42,7 +46,7 @@ def read_page(ink, looks, expected) -> Page:
     """The readings of the letters `expected` in `ink` (its lines' `looks`,
     as the simulator recorded them, or none): the canvas whole (_read);
     where that does not read them all, the writing without a frame round it,
-    then its top line of writing (writing_on), the first reading the most
+    then its line of writing (writing_on), the first reading the most
     letters in place kept, where it reads more than the canvas whole. Its
     cost is bounded (recognition.bounded)."""
     with bounded():
@@ -53,7 +57,7 @@ def _read_page(ink, looks, expected):
     page = Page(_read(ink, looks, expected), Writing(ink, looks), '')
     if _in_place(page.readings, expected) == len(expected):
         return page
-    for where, writing in writing_on(ink, looks):
+    for where, writing in writing_on(ink, looks, len(expected)):
         readings = _read(writing.ink, writing.looks, expected)
         if _in_place(readings, expected) > _in_place(page.readings, expected):
             page = Page(readings, writing, where)
@@ -75,21 +79,50 @@ def _in_place(readings, expected):
     return sum(r.letter == e for r, e in zip(readings, expected))
 
 
-def writing_on(ink, looks):
+def writing_on(ink, looks, count=1):
     """(where, Writing) of what a TA reads on a canvas other than all of
     it: the ink less a frame round the rest (framed), then, where the rest
     stands in several lines of writing one above another (lines), the top
-    line alone. Nothing where there is neither."""
+    one TOP_LINE as high as the tallest or more (a piece of a letter above
+    the rest is none), the one of them likeliest to hold `count` letters
+    (_likeliest), of those as high (an underline is none). Nothing where
+    there is neither."""
     every = _kept(ink)
     frame = framed(ink, every)
     kept = [i for i in every if i not in frame]
     found = [('read inside the frame drawn round it', kept)] if frame else []
     bands = lines(ink, kept)
-    if len(bands) > 1 and _height(ink, bands[0]) >= TOP_LINE * max(_height(ink, b) for b in bands):
-        found.append((f'read in the top line of the {len(bands)} lines of its writing', bands[0]))
+    tallest = max((_height(ink, band) for band in bands), default=0.0)
+    written = [band for band in bands if _height(ink, band) >= TOP_LINE * tallest]
+    if len(bands) > 1 and len(written) > 1 and written[0] is bands[0]:
+        k = _likeliest(ink, written, count)
+        found.append((_line_named(bands.index(written[k]), len(bands), count), written[k]))
     return [(where, Writing([ink[i] for i in sorted(chosen)],     # in the order drawn
                             [looks[i] for i in sorted(chosen)] if len(looks) == len(ink) else []))
             for where, chosen in found]
+
+
+def _likeliest(ink, bands, count):
+    """Index of the line of writing (`bands`, top first) to read for
+    `count` letters: the top one, unless another holds a number of letters
+    nearer `count` by a letter or more (the nearest, the top one of those
+    alike). A line holds its letters set apart (rows.apart), or as many as
+    its width holds, each LETTER_WIDTH as wide as high (letters touch), the
+    more."""
+    offs = []
+    for members in bands:
+        part = [ink[i] for i in members]
+        _, _, w, h = box([p for line in part for p in line])
+        offs.append(abs(max(len(apart(part)), w / h / LETTER_WIDTH) - count))
+    nearest = min(range(len(bands)), key=offs.__getitem__)
+    return nearest if offs[nearest] <= offs[0] - 1 else 0
+
+
+def _line_named(k, lines_of_writing, count):
+    if k == 0:
+        return f'read in the top line of the {lines_of_writing} lines of its writing'
+    return (f'read in line {k + 1} of the {lines_of_writing} lines of its writing, from the '
+            f'top: the one nearest {count} letters side by side')
 
 
 def _height(ink, chosen):

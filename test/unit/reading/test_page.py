@@ -52,6 +52,28 @@ def test_only_letters_in_their_places_in_the_top_line_are_credited(bottom_text, 
                    for r, e in zip(page.readings, expected)) == credited
 
 
+def heart(middle=4.5, bottom=7.0, size=2.5):
+    """A heart `size` high: two lobes, each a round arc, and a point below."""
+    import math
+    lobes = [[(middle + side * size / 4 + size / 4 * math.cos(math.radians(a)),
+               bottom + size * 3 / 4 + size / 4 * math.sin(math.radians(a)))
+              for a in range(*((-45, 181, 15) if side > 0 else (0, 226, 15)))]
+             for side in (1, -1)]
+    point = [lobes[1][-1], (middle, bottom), lobes[0][0]]
+    return lobes + [point]
+
+
+def test_letters_below_a_picture_above_an_underline_read_in_their_line():
+    """SARA below a heart, underlined (a real class's XAVIERA): read as
+    one, nothing; the line of writing with as many letters side by side as
+    expected reads SARA, not the picture above it, nor the line below."""
+    ink = heart() + row('SARA') + [[(1.0, 2.5), (7.5, 2.5)]]
+    page = read_page(ink, [], 'SARA')
+    assert letters(page) == 'SARA'
+    assert page.where == ('read in line 2 of the 3 lines of its writing, from the top: '
+                          'the one nearest 4 letters side by side')
+
+
 def test_each_line_is_read_in_its_pen_colours():
     """Each letter of the top line in its own colour, the border and the
     digits in others: the line's three colours are its three letters."""
