@@ -129,6 +129,26 @@ def rows_afresh():
     rows._row.cache_clear()
 
 
+def test_a_line_of_writing_that_reads_is_read_before_the_canvas_whole(rows_afresh,
+                                                                       monkeypatch):
+    """Where a TA looks first: SARA below a heart, underlined, reads in its
+    line within the fittings (recognition.FITTINGS) its line alone takes,
+    the canvas whole never read as one row (it took a real XAVIERA below a
+    heart 1.7 s). Bounded so and graded against another name, the line's
+    cuts for it are cut short, and so is the canvas whole, read next: no
+    letter is credited that was not read."""
+    from turtle_letters.reading import recognition
+    from turtle_letters.reading.rows import read_row
+    with recognition.bounded(10 ** 6) as effort:
+        assert ''.join(r.letter for r in read_row(row('SARA'), 'SARA')) == 'SARA'
+    monkeypatch.setattr(recognition, 'FITTINGS', 10 ** 6 - effort.left)
+    page = heart() + row('SARA') + [[(1.0, 2.5), (7.5, 2.5)]]
+    rows_afresh._row.cache_clear()
+    assert letters(read_page(page, [], 'SARA')) == 'SARA'
+    rows_afresh._row.cache_clear()
+    assert letters(read_page(page, [], 'SAMA')) == '????'
+
+
 def test_a_row_read_in_fewer_fittings_than_it_takes_reads_none_it_did_not_finish(rows_afresh):
     """A roman triplex ZT, its letters touching, is cut to be read: over a
     hundred fittings. Bounded by the count it took, it reads the same;
