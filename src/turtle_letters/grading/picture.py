@@ -236,11 +236,13 @@ def _letters_over(painter, letters, view):
     for k, (label, strokes) in enumerate(letters):
         for pen in (QPen(QColor('black'), 3), QPen(QColor('white'), 1.5, Qt.DashLine)):
             painter.setPen(pen)
-            for stroke in strokes:
+            for i, stroke in enumerate(strokes):
                 for a, b in zip(stroke, stroke[1:]):
                     painter.drawLine(px(a), px(b))
-                if len(stroke) == 1:        # a block letter's middle line is points
-                    painter.drawEllipse(px(stroke[0]), pen.widthF(), pen.widthF())
+                # a block letter's middle line is points: dots as wide as a line, every
+                # other one white, dashed as a line is
+                if len(stroke) == 1 and not (pen.style() == Qt.DashLine and i % 2):
+                    painter.drawPoint(px(stroke[0]))
         corner_px = px((min(x for s in strokes for x, _ in s), max(y for s in strokes for _, y in s))
                        ) if any(strokes) else QPointF(left + 2, upper + 18 * (k + 1))
         painter.fillRect(QRectF(corner_px.x(), corner_px.y() - 16, 9 * len(label) + 6, 15),

@@ -94,12 +94,25 @@ def black_in_zoom(image):
 
 def test_a_letter_read_by_its_middle_line_is_drawn_as_its_points(tmp_path):
     """A block letter is read by its middle line, whose candidates are
-    points (lines of one point each): each is drawn over the ink."""
+    points (lines of one point each): each is drawn over the ink, and
+    they cover no more of it than the same letter's lines would (a real
+    XAVIERA's E, 265 points each drawn a pen's width round, was a bold
+    white E over a thin one)."""
     strokes, looks = [[(2.0, 5.0), (2.0, 2.0), (3.5, 2.0)]], [(*GREEN, 3)]
     middle = [[(2.1, 2.1 + 0.1 * i)] for i in range(29)] + [[(2.2 + 0.1 * i, 2.1)] for i in range(12)]
-    path = str(tmp_path / 'middle.png')
-    draw_ink(path, strokes, looks, BACKGROUND, [('L', middle)], 'an L read by its middle line')
-    assert black_in_zoom(QImage(path)) > 20
+    lines = [[(2.1, 4.9), (2.1, 2.1), (3.3, 2.1)]]
+    pictures = {}
+    for name, letters in (('bare', []), ('points', [('L', middle)]), ('lines', [('L', lines)])):
+        pictures[name] = str(tmp_path / f'{name}.png')
+        draw_ink(pictures[name], strokes, looks, BACKGROUND, letters, 'an L')
+    bare, points, drawn = (QImage(pictures[name]) for name in ('bare', 'points', 'lines'))
+
+    def covered(image):
+        return sum(image.pixel(x, y) != bare.pixel(x, y)
+                   for x in range(CANVAS_PIXELS + 25, image.width() - 5)
+                   for y in range(45, image.height() - 5))
+    assert black_in_zoom(points) > 20
+    assert covered(points) <= covered(drawn)
 
 
 def test_pictures_painted_in_several_threads_at_once_are_those_painted_in_the_main_one(tmp_path):
