@@ -14,7 +14,7 @@ from typing import List, NamedTuple
 
 import numpy
 
-from .ink import box, samples
+from .ink import box, dash, flooded, samples
 from .recognition import Reading, bounded
 from .rows import apart, in_colours, read_row, without_specks
 
@@ -22,7 +22,7 @@ EDGE = 0.05         # share of the ink's larger side within which a frame's poin
 ON_EDGE = 0.9       # share of a line's length that lies so: it runs along the box's edges
 FRAMED = 0.75       # share of each side of the box a frame's lines run along, at least
 LINE_GAP = 0.15     # clear space between two lines of writing, share of the taller one's height
-# The line of writing read stands at least this share as high as the tallest: a piece
+# The top line of writing stands at least this share as high as the tallest: a piece
 # of a letter above the rest is none (a gothic K tilted 25 degrees, its flourish a sixth
 # of its height, was a line of its own, read as a T).
 TOP_LINE = 0.5
@@ -58,7 +58,10 @@ def read_page(ink, looks, expected) -> Page:
 
 def _read_page(ink, looks, expected):
     best = None
-    for where, writing in writing_on(ink, looks, len(expected)):
+    # a flood (ink.flooded) is no letter anywhere: no writing is sought on it (30 turtles'
+    # flood sought its lines of writing for 0.6 s)
+    parts = [] if flooded(ink, max(1, len(expected))) else writing_on(ink, looks, len(expected))
+    for where, writing in parts:
         page = Page(_read(writing.ink, writing.looks, expected), writing, where)
         if _in_place(page.readings, expected) == len(expected):
             return page
@@ -90,18 +93,16 @@ def writing_on(ink, looks, count=1):
     stands in several lines of writing one above another (lines), the top
     one TOP_LINE as high as the tallest or more (a piece of a letter above
     the rest is none), the one of them likeliest to hold `count` letters
-    (_likeliest), of those as high (an underline is none). Nothing where
-    there is neither."""
+    (_likeliest). Nothing where there is neither."""
     every = _kept(ink)
     frame = framed(ink, every)
     kept = [i for i in every if i not in frame]
     found = [('read inside the frame drawn round it', kept)] if frame else []
     bands = lines(ink, kept)
-    tallest = max((_height(ink, band) for band in bands), default=0.0)
-    written = [band for band in bands if _height(ink, band) >= TOP_LINE * tallest]
-    if len(bands) > 1 and len(written) > 1 and written[0] is bands[0]:
-        k = _likeliest(ink, written, count)
-        found.append((_line_named(bands.index(written[k]), len(bands), count), written[k]))
+    if len(bands) > 1 and \
+            _height(ink, bands[0]) >= TOP_LINE * max(_height(ink, band) for band in bands):
+        k = _likeliest(ink, bands, count)
+        found.append((_line_named(k, len(bands), count), bands[k]))
     return [(where, Writing([ink[i] for i in sorted(chosen)],     # in the order drawn
                             [looks[i] for i in sorted(chosen)] if len(looks) == len(ink) else []))
             for where, chosen in found]
@@ -113,12 +114,13 @@ def _likeliest(ink, bands, count):
     nearer `count` by a letter or more (the nearest, the top one of those
     alike). A line holds its letters set apart (rows.apart), or as many as
     its width holds, each LETTER_WIDTH as wide as high (letters touch), the
-    more."""
+    more; a line driven level (ink.dash), an underline, holds none."""
     offs = []
     for members in bands:
         part = [ink[i] for i in members]
         _, _, w, h = box([p for line in part for p in line])
-        offs.append(abs(max(len(apart(part)), w / h / LETTER_WIDTH) - count))
+        offs.append(math.inf if dash(part, count) else
+                    abs(max(len(apart(part)), w / h / LETTER_WIDTH) - count))
     nearest = min(range(len(bands)), key=offs.__getitem__)
     return nearest if offs[nearest] <= offs[0] - 1 else 0
 

@@ -63,11 +63,13 @@ def heart(middle=4.5, bottom=7.0, size=2.5):
     return lobes + [point]
 
 
-def test_letters_below_a_picture_above_an_underline_read_in_their_line():
-    """SARA below a heart, underlined (a real class's XAVIERA): read as
-    one, nothing; the line of writing with as many letters side by side as
-    expected reads SARA, not the picture above it, nor the line below."""
-    ink = heart() + row('SARA') + [[(1.0, 2.5), (7.5, 2.5)]]
+@pytest.mark.parametrize('height', [2.5, 5.0])
+def test_letters_below_a_picture_above_an_underline_read_in_their_line(height):
+    """SARA below a heart, as high as it or two and a half times, and
+    underlined (a real class's XAVIERA): read as one, nothing; the line of
+    writing with as many letters side by side as expected reads SARA, not
+    the picture above it, nor the line below."""
+    ink = heart(bottom=5.9, size=height) + row('SARA') + [[(1.0, 2.5), (7.5, 2.5)]]
     page = read_page(ink, [], 'SARA')
     assert letters(page) == 'SARA'
     assert page.where == ('read in line 2 of the 3 lines of its writing, from the top: '
