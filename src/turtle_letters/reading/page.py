@@ -1,13 +1,13 @@
 """Where the letters are on a canvas, as a TA finds them at a glance:
-each in a pen colour of its own where the ink comes in as many colours
-as letters expected, else the ink as a row; and where that does not read
-them, the writing without a frame drawn round it, and of several lines
-of writing, one above another, the one with as many letters side by side
-as expected, or nearest that (a real class's SNB above 002, inside a
-border; XAVIERA below a heart, above a line): the top one of those
-alike. One line, chosen by its letters' count, not by what they read: a
-canvas is not searched for the letters hoped for, or a student who wrote
-every letter, a line each, would earn any. No ROS here.
+first the writing without a frame drawn round it, and of several lines
+of writing, one above another, the top one, unless another holds a
+number of letters nearer the count expected by one or more (a real
+class's SNB above 002, inside a border; XAVIERA below a heart, above a
+line); then the canvas whole. Each is read with a letter in each pen
+colour where its ink comes in as many colours as letters expected, else
+as a row. One line, chosen by its letters' count, not by what they read:
+a canvas is not searched for the letters hoped for, or a student who
+wrote every letter, a line each, would earn any. No ROS here.
 """
 import math
 from typing import List, NamedTuple
