@@ -158,12 +158,23 @@ def package_name(folder):
     return root.findtext('name', '').strip() if root is not None else ''
 
 
+def ros2_build(folder):
+    """The ROS 2 build type (ament_python, ament_cmake) a package's
+    package.xml builds it with, or '': catkin builds none of them."""
+    root = _xml(os.path.join(folder, 'package.xml'))
+    if root is None:
+        return ''
+    named = [root.findtext('export/build_type', '')] + \
+        [tool.text or '' for tool in root.iter('buildtool_depend')]
+    return next((tool.strip() for tool in named if tool.strip().startswith('ament')), '')
+
+
 def find(top) -> Package:
     """The submission's package: of the package.xml under `top`, the one
     whose launch file starts turtlesim and a controller, the shallowest
     first; the other packages it needs are built beside it; those it does
-    not need, a second copy of a package and a package named turtlesim
-    are left out and noted."""
+    not need, a second copy of a package, a package named turtlesim and a
+    ROS 2 package (ros2_build) are left out and noted."""
     problem, special = survey(top)
     if problem:
         return Package('', '', None, problem)
@@ -177,10 +188,10 @@ def find(top) -> Package:
         # (`bash turtleletterstwo.sh`, as a real class's instructions said)
         launch = lab_launch(top, {LOOSE: top})[1]
         return Package(LOOSE, top, launch, '', notes=notes, loose=True)
-    ours = [(f, n) for f, n in named if n != SIMULATOR]
+    ros2 = {f: ros2_build(f) for f, _ in named}
+    ours = [(f, n) for f, n in named if n != SIMULATOR and not ros2[f]]
     if not ours:
-        return Package('', named[0][0], None, f'its only package is named {SIMULATOR}, as the '
-                       f'simulator is: the grader runs {SIMULATOR} itself', notes=notes)
+        return Package('', named[0][0], None, _none_built(named, ros2), notes=notes)
     packages = {n: f for f, n in reversed(ours) if n}     # the shallowest of a name
     folder, name = min(ours, key=lambda fn: (lab_launch(fn[0], packages)[0],
                                              fn[0].count(os.sep), fn[0]))
@@ -194,7 +205,10 @@ def find(top) -> Package:
         where = os.path.relpath(other, top)
         if other == folder or not other_name:
             continue
-        if other_name == SIMULATOR:
+        if ros2[other]:
+            notes.append(f'left out {where}: {other_name}, a ROS 2 package ({ros2[other]}), '
+                         f'which catkin does not build')
+        elif other_name == SIMULATOR:
             notes.append(f'left out {where}: its own {SIMULATOR} (the grader runs {SIMULATOR})')
         elif other_name in kept:
             notes.append(f'left out {where}: a second package named {other_name} (graded the '
@@ -206,6 +220,19 @@ def find(top) -> Package:
             kept[other_name] = other
             others.append(other)
     return Package(name, folder, launch, '', others, notes)
+
+
+def _none_built(named, ros2):
+    """Why a submission whose packages ((folder, name), shallowest first)
+    hold none the grader builds is not run: a ROS 2 package, or only its
+    own turtlesim."""
+    for folder, name in named:
+        if ros2[folder]:
+            return (f'{name} is a ROS 2 package (its package.xml builds it with {ros2[folder]}): '
+                    f'this lab is ROS 1 (Noetic), where catkin builds packages and no ROS 2 '
+                    f'package builds or runs; write it as a catkin package, with rospy or roscpp')
+    return (f'its only package is named {SIMULATOR}, as the simulator is: the grader runs '
+            f'{SIMULATOR} itself')
 
 
 def needed(name, packages, launch_file):

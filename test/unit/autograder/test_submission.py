@@ -202,3 +202,30 @@ def test_a_package_named_turtlesim_alone_is_not_run(tmp_path):
                     'turtlesim/launch/x.launch': LAB})
     assert find(str(tmp_path)).problem == ('its only package is named turtlesim, as the '
                                            'simulator is: the grader runs turtlesim itself')
+
+
+ROS2 = ('<package format="3"><name>{}</name><buildtool_depend>{}</buildtool_depend>'
+        '<export><build_type>{}</build_type></export></package>')
+
+
+def test_a_ros_2_package_alone_is_refused_in_words_a_cadet_can_act_on(tmp_path):
+    """A cadet who followed a ROS 2 tutorial hands in an ament package:
+    catkin_make would only say the workspace is "non-homogeneous" and
+    suggest catkin_make_isolated, which cannot build it on Noetic either."""
+    make(tmp_path, {'letter_l/package.xml': ROS2.format('letter_l', 'ament_python',
+                                                        'ament_python'),
+                    'letter_l/setup.py': ''})
+    assert find(str(tmp_path)).problem == (
+        'letter_l is a ROS 2 package (its package.xml builds it with ament_python): this lab '
+        'is ROS 1 (Noetic), where catkin builds packages and no ROS 2 package builds or runs; '
+        'write it as a catkin package, with rospy or roscpp')
+
+
+def test_a_ros_2_package_beside_the_lab_is_left_out_and_said(tmp_path):
+    make(tmp_path, {'src/lab/package.xml': PACKAGE.format('lab'), 'src/lab/launch/x.launch': LAB,
+                    'ros2/draw_cpp/package.xml': ROS2.format('draw_cpp', 'ament_cmake',
+                                                             'ament_cmake')})
+    package = find(str(tmp_path))
+    assert (package.name, package.others, package.problem) == ('lab', [], '')
+    assert package.notes == ['left out ros2/draw_cpp: draw_cpp, a ROS 2 package (ament_cmake), '
+                             'which catkin does not build']
