@@ -182,6 +182,11 @@ def find(top) -> Package:
              for path in special]
     named = [(f, package_name(f)) for f in package_folders(top)]
     if not named:
+        ros2 = _ros2_script(top)
+        if ros2:
+            return Package('', '', None, f'{ros2} imports rclpy: it is ROS 2 code, and this lab '
+                           f'is ROS 1 (Noetic), where no ROS 2 node runs; write it with rospy, '
+                           f'in a catkin package', notes=notes)
         if not _runnable(top):
             return Package('', '', None, f'no package.xml in {top}', notes=notes)
         # a TA runs the scripts of a folder handed in without its package.xml
@@ -314,8 +319,25 @@ def _runnable(folder, depth=3):
 
 
 def _script(entry):
-    """Whether a plain file is a script a TA runs: it starts with #! or ends in .sh."""
-    return _starts_with_shebang(entry.path) or entry.name.endswith('.sh')
+    """Whether a plain file is a script a TA runs: it starts with #!, ends
+    in .sh, or is an executable .py (run with python3: unstartable_python)."""
+    return _starts_with_shebang(entry.path) or entry.name.endswith('.sh') or \
+        (entry.name.endswith('.py') and os.access(entry.path, os.X_OK))
+
+
+def _ros2_script(folder, depth=3):
+    """The name of the first Python file under `folder` that imports
+    rclpy, where none imports rospy: ROS 2 code, which Noetic cannot run;
+    else ''."""
+    imports = {}
+    for entry in _plain_files(folder, depth, lambda found: False):
+        if entry.name.endswith('.py'):
+            text = read_plain(entry.path, MAX_BYTES) or b''
+            for module in ('rclpy', 'rospy'):
+                if re.search(rb'^\s*(import|from)\s+' + module.encode() + rb'\b', text,
+                             re.MULTILINE):
+                    imports.setdefault(module, entry.name)
+    return '' if 'rospy' in imports else imports.get('rclpy', '')
 
 
 def wrap(copied):

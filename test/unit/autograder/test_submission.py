@@ -229,3 +229,21 @@ def test_a_ros_2_package_beside_the_lab_is_left_out_and_said(tmp_path):
     assert (package.name, package.others, package.problem) == ('lab', [], '')
     assert package.notes == ['left out ros2/draw_cpp: draw_cpp, a ROS 2 package (ament_cmake), '
                              'which catkin does not build']
+
+
+def test_loose_ros_2_scripts_are_refused_in_words_and_a_rospy_one_without_its_line_is_run(
+        tmp_path):
+    """Scripts handed in without a package.xml: one that imports rclpy (a
+    real class's turtlesim_ros2.py, executable, no #! line) is ROS 2 code,
+    said so rather than 'no package.xml'; one that imports rospy, a TA
+    runs with python3 (session.unstartable_python), so it is wrapped."""
+    make(tmp_path, {'two/turtlesim_ros2.py': 'import rclpy\nfrom rclpy.node import Node\n',
+                    'two/README.md': 'draws a house',
+                    'one/draw.py': 'import rospy\nrospy.init_node("d")\n'})
+    for script in ('two/turtlesim_ros2.py', 'one/draw.py'):
+        os.chmod(tmp_path / script, 0o755)
+    assert find(str(tmp_path / 'two')).problem == (
+        'turtlesim_ros2.py imports rclpy: it is ROS 2 code, and this lab is ROS 1 (Noetic), '
+        'where no ROS 2 node runs; write it with rospy, in a catkin package')
+    package = find(str(tmp_path / 'one'))
+    assert (package.name, package.problem, package.loose) == (submission.LOOSE, '', True)
