@@ -17,6 +17,11 @@ LOGS_READ = 40          # log files read at most
 LOG_DEPTH = 2           # folders under ~/.ros/log looked in
 LOG_ENTRIES = 1000      # entries of a folder looked at
 SAID_CHARS = 200        # characters of a line a node printed, shown at most
+# An error line whose cause is another ROS or Python than the course's, and what to do.
+OTHER_WORLD = ((re.compile(r"env: .python2.: No such file"),
+                'ROS Noetic runs Python 3: name python3 in its #! line'),
+               (re.compile(r"No module named .rcl(py|cpp)."),
+                'that is ROS 2, and this lab is ROS 1 (Noetic): write it with rospy'))
 ARGUMENT_ERRORS = ('IndexError', 'ValueError')    # of a line that reads sys.argv: no arguments
 # how the lines roslaunch prints of its own begin
 ROSLAUNCH_LINES = ('process[', '[', 'setting /', 'ROS_MASTER_URI', '...', 'started roslaunch',
@@ -147,9 +152,14 @@ def first_death(output, work):
     for text in (node_logs(work, node), output[:died.start()]):
         why = last_error(text)
         if why:
-            return f'{node} died: {why}{in_package(text, work)}'
+            return f'{node} died: {why}{in_package(text, work)}{_other_world(why)}'
     said = theirs(last_said(output[:died.start()]), work)   # a usage line names its script
     return f'{node} died' + (f' just after this line was printed: {said}' if said else '')
+
+
+def _other_world(why):
+    """'; what to do', where an error line `why` comes of Python 2 or ROS 2 code."""
+    return ''.join(f'; {hint}' for line, hint in OTHER_WORLD if line.search(why))
 
 
 def last_said(output):

@@ -188,7 +188,8 @@ def test_a_script_whose_bang_names_a_program_the_machine_lacks_says_so(tmp_path)
               'process[s0-1]: started with pid [21]\n'
               '[s0-1] process has died [pid 21, exit code 127, cmd /w/s.py].\n')
     assert talker_failure(output, str(tmp_path)) == \
-        's0 died: /usr/bin/env: \u2018python2\u2019: No such file or directory'
+        's0 died: /usr/bin/env: \u2018python2\u2019: No such file or directory; ' \
+        'ROS Noetic runs Python 3: name python3 in its #! line'
 
 
 def test_commands_no_turtle_hears_are_why_nothing_moved(tmp_path):
@@ -202,3 +203,13 @@ def test_commands_no_turtle_hears_are_why_nothing_moved(tmp_path):
     assert why_not_launched('', [graph], str(tmp_path)) == \
         f'no node subscribed to /chatter, and no turtle moved: {said}'
     assert why_still('', str(tmp_path), ['/l'], None, [graph]) == said
+
+
+def test_a_node_that_imports_ros_2_is_told_what_to_do(tmp_path):
+    """Noetic has no rclpy: the bare error line reads as if a module were
+    missing to install."""
+    ros2 = ("ModuleNotFoundError: No module named 'rclpy'\n"
+            '[writer-2] process has died [pid 35, exit code 1].\n')
+    assert talker_failure(ros2, str(tmp_path)) == (
+        "writer died: ModuleNotFoundError: No module named 'rclpy'; that is ROS 2, and this lab "
+        'is ROS 1 (Noetic): write it with rospy')
