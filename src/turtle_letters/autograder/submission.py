@@ -302,9 +302,9 @@ def _executable(entries):
 
 def made_executable(folder, depth=3):
     """A TA's fallback: the plain files under `folder` (the package's copy)
-    that start with #! or end in .sh but were handed in without the execute
-    bit (mode 644), made executable, as a TA would before running them. Their paths
-    in the package."""
+    that are scripts (_script: a #!, a .sh, a .py that imports rospy) but
+    were handed in without the execute bit (mode 644), made executable, as
+    a TA would before running them. Their paths in the package."""
     made = []
     for entry in _plain_files(folder, depth, lambda found: False):
         if not os.access(entry.path, os.X_OK) and _script(entry) and len(made) < MAX_NODES:
@@ -320,24 +320,30 @@ def _runnable(folder, depth=3):
 
 def _script(entry):
     """Whether a plain file is a script a TA runs: it starts with #!, ends
-    in .sh, or is an executable .py (run with python3: unstartable_python)."""
+    in .sh, or is a .py that is executable or imports rospy (a TA types
+    `python3 draw.py`; the grader runs it so: unstartable_python)."""
     return _starts_with_shebang(entry.path) or entry.name.endswith('.sh') or \
-        (entry.name.endswith('.py') and os.access(entry.path, os.X_OK))
+        (entry.name.endswith('.py') and (os.access(entry.path, os.X_OK) or
+                                         'rospy' in _imported(entry.path)))
+
+
+def _imported(path):
+    """Which of rospy and rclpy (ROS 2's) a Python file imports."""
+    text = read_plain(path, MAX_BYTES) or b''
+    return {module for module in ('rospy', 'rclpy')
+            if re.search(rb'^\s*(import|from)\s+' + module.encode() + rb'\b', text, re.MULTILINE)}
 
 
 def _ros2_script(folder, depth=3):
     """The name of the first Python file under `folder` that imports
     rclpy, where none imports rospy: ROS 2 code, which Noetic cannot run;
     else ''."""
-    imports = {}
+    found = {}
     for entry in _plain_files(folder, depth, lambda found: False):
         if entry.name.endswith('.py'):
-            text = read_plain(entry.path, MAX_BYTES) or b''
-            for module in ('rclpy', 'rospy'):
-                if re.search(rb'^\s*(import|from)\s+' + module.encode() + rb'\b', text,
-                             re.MULTILINE):
-                    imports.setdefault(module, entry.name)
-    return '' if 'rospy' in imports else imports.get('rclpy', '')
+            for module in _imported(entry.path):
+                found.setdefault(module, entry.name)
+    return '' if 'rospy' in found else found.get('rclpy', '')
 
 
 def wrap(copied):

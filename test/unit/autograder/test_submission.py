@@ -247,3 +247,17 @@ def test_loose_ros_2_scripts_are_refused_in_words_and_a_rospy_one_without_its_li
         'where no ROS 2 node runs; write it with rospy, in a catkin package')
     package = find(str(tmp_path / 'one'))
     assert (package.name, package.problem, package.loose) == (submission.LOOSE, '', True)
+
+
+def test_a_rospy_script_handed_in_without_its_line_or_mode_is_run_with_python3(tmp_path):
+    """A node written on a machine where it was run as `python3 draw.py`:
+    no #! line, mode 644. A TA runs it so; the grader makes it executable
+    and starts it with python3. A helper module that imports no rospy and
+    a plain text file are left as they are."""
+    make(tmp_path, {'lab/scripts/draw.py': 'import math\nimport rospy\nrospy.init_node("d")\n',
+                    'lab/scripts/shapes.py': 'import math\nSQUARE = 4\n',
+                    'lab/scripts/notes.txt': 'import rospy\n'})
+    folder = str(tmp_path / 'lab')
+    assert submission.made_executable(folder) == ['scripts/draw.py']
+    assert submission.unstartable_python(folder) == ['draw.py']
+    assert submission.scripts(folder) == ['draw.py']
