@@ -33,6 +33,8 @@ SHORT = 0.5         # a letter of a row less high than this share of the row rea
 SMALL = 0.25        # ... less high than this share: unfinished, no letter
 NEAR_TILTS = (-5, 5)    # degrees a part is tried off level when finding where to cut
 TIE = 0.01          # cuts whose fits differ by less fit as well
+CORNER = 45         # degrees a line turns at a corner of its ink, at least
+NEAR_CORNERS = 2    # corners within a tenth of a share of the best cut also tried, at most
 BARE = 0.2          # a form narrower than this share of its height is a bare stroke
 ANY = '?'           # in a text to cut a row into, a letter that may be any
 ACROSS = 75         # degrees off a row's slope past which a letter of it lies across the row
@@ -63,6 +65,22 @@ class Row:
     def fine(self):
         """The ink with points at most SAMPLE / 2 of its height apart: where it is cut."""
         return [samples([line], SAMPLE * self.height / 2) for line in self.ink if line]
+
+    @functools.cached_property
+    def corners(self):
+        """The x of each corner of the ink (a turn of CORNER degrees or more
+        from one fine point to the next), ascending: where two touching
+        letters' strokes meet (an R's leg and an M's first, a V)."""
+        xs = []
+        for line in self.fine:
+            points = numpy.asarray(line, dtype=float)
+            steps = numpy.diff(points, axis=0)
+            moved = numpy.hypot(steps[:, 0], steps[:, 1]) > 0
+            points, steps = points[numpy.r_[True, moved]], steps[moved]
+            headings = numpy.degrees(numpy.arctan2(steps[:, 1], steps[:, 0]))
+            turns = numpy.abs((numpy.diff(headings) + 180) % 360 - 180)
+            xs += points[1:-1][turns >= CORNER][:, 0].tolist()
+        return sorted(xs)
 
     @functools.cached_property
     def _across(self):
@@ -229,6 +247,13 @@ def cut(row, expected, ahead=True):
         nearest = min(fits)[1]
         fits += _scored([x for x in (nearest - share / 20, nearest + share / 20) if left < x < end],
                         before, after if ahead else None)
+        # a corner near the best cut, where two touching letters' strokes meet, kept only
+        # where both letters fit it within CLEAN: a corner within a letter leaves a piece
+        # that fits some letter (a zigzag N's last two legs are a V)
+        corners = sorted((x for x in row.corners if left < x < end and
+                          abs(x - nearest) < share / 10), key=lambda x: abs(x - nearest))
+        fits += [(fit, x) for fit, x in _scored(corners[:NEAR_CORNERS], before,
+                                                after if ahead else None) if fit <= CLEAN]
         best = min(f for f, _ in fits)
         # of the cuts that fit as well, the one through the least ink (the leftmost of those)
         cuts.append(min(sorted(x for f, x in fits if f <= best + TIE),

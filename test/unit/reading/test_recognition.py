@@ -499,6 +499,17 @@ def test_a_bare_stroke_touching_its_neighbour_is_cut_off_it(family, text, aspect
     assert ''.join(r.letter or '?' for r in read_row(ink, text)) == text
 
 
+@pytest.mark.parametrize('aspect, tilt', [(0.8, 0), (1.3, -20), (1.0, 10)])
+def test_touching_letters_sharing_a_side_are_cut_at_the_corner_where_they_meet(aspect, tilt):
+    """A cadet's square O and U side by side, the U's first side the O's
+    last: the cut that gives each letter its own lies within a few
+    hundredths of the row's height of the corner where the U turns off
+    the O, finer than the cuts tried every tenth of a share (the U's part
+    read as a J)."""
+    ink = turned(cadets('KOU', aspect), tilt, (0.0, 0.0))
+    assert ''.join(r.letter or '?' for r in read_row(ink, 'KOU')) == 'KOU'
+
+
 def s_begun(left, top, radius=0.4):
     """The first quarter of an S's top curve and a flat run: how an S that
     a real class's turtle never finished looked when the grader read it."""
