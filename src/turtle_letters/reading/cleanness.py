@@ -26,7 +26,7 @@ from typing import NamedTuple
 
 import numpy
 
-from .ink import box, length, thinned
+from .ink import box, length, thinned, turns_along
 from .rows import without_specks
 
 CORNER = 25.0       # degrees a line turns at one point, past which it may be a corner
@@ -60,12 +60,9 @@ def _between_corners(line, height):
     """`line` (an array of points) cut at its corners: where it turns more
     than CORNER at one point, RUN of the height or more along it from the
     corner before (or its start) and to its end."""
-    steps = numpy.diff(line, axis=0)
-    heading = numpy.degrees(numpy.arctan2(steps[:, 1], steps[:, 0]))
-    turns = (numpy.diff(heading) + 180.0) % 360.0 - 180.0
-    along = numpy.r_[0.0, numpy.cumsum(numpy.hypot(*steps.T))]
+    along = numpy.r_[0.0, numpy.cumsum(numpy.hypot(*numpy.diff(line, axis=0).T))]
     cuts = [0]
-    for i in numpy.flatnonzero(numpy.abs(turns) > CORNER) + 1:
+    for i in numpy.flatnonzero(numpy.abs(turns_along(line)) > CORNER) + 1:
         if along[i] - along[cuts[-1]] >= RUN * height <= along[-1] - along[i]:
             cuts.append(int(i))
     cuts.append(len(line) - 1)

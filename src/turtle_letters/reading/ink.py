@@ -122,6 +122,14 @@ def straight(ink):
     return numpy.ptp(centred @ axes[1]) <= STRAIGHT * numpy.ptp(centred @ axes[0])
 
 
+def turns_along(line):
+    """The turn, degrees from -180 to 180 (counter-clockwise above 0), at
+    each point of `line` (an array of points) between its first and last."""
+    steps = numpy.diff(line, axis=0)
+    heading = numpy.degrees(numpy.arctan2(steps[:, 1], steps[:, 0]))
+    return (numpy.diff(heading) + 180.0) % 360.0 - 180.0
+
+
 def turned(lines, degrees, centre):
     """`lines` turned by `degrees` counter-clockwise about `centre`."""
     c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))

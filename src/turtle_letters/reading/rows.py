@@ -22,7 +22,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
-from .ink import box, closed, dash, flooded, inside, outline, samples, turned
+from .ink import box, closed, dash, flooded, inside, outline, samples, turned, turns_along
 from .forms import CLEAN, candidates, templates
 from .recognition import (MOST_TILT, SAMPLE, TILTS, Reading, Unfinished, best_fit, plainly_other,
                           read)
@@ -33,7 +33,7 @@ SHORT = 0.5         # a letter of a row less high than this share of the row rea
 SMALL = 0.25        # ... less high than this share: unfinished, no letter
 NEAR_TILTS = (-5, 5)    # degrees a part is tried off level when finding where to cut
 TIE = 0.01          # cuts whose fits differ by less fit as well
-CORNER = 45         # degrees a line turns at a corner of its ink, at least
+CORNER_TURN = 45    # degrees a line turns at a corner a row may be cut at, at least
 NEAR_CORNERS = 2    # corners within a tenth of a share of the best cut also tried, at most
 BARE = 0.2          # a form narrower than this share of its height is a bare stroke
 ANY = '?'           # in a text to cut a row into, a letter that may be any
@@ -68,18 +68,15 @@ class Row:
 
     @functools.cached_property
     def corners(self):
-        """The x of each corner of the ink (a turn of CORNER degrees or more
+        """The x of each corner of the ink (a turn of CORNER_TURN degrees or more
         from one fine point to the next), ascending: where two touching
-        letters' strokes meet (an R's leg and an M's first, a V)."""
+        letters' strokes meet (a U turning off a square O's side)."""
         xs = []
         for line in self.fine:
             points = numpy.asarray(line, dtype=float)
-            steps = numpy.diff(points, axis=0)
-            moved = numpy.hypot(steps[:, 0], steps[:, 1]) > 0
-            points, steps = points[numpy.r_[True, moved]], steps[moved]
-            headings = numpy.degrees(numpy.arctan2(steps[:, 1], steps[:, 0]))
-            turns = numpy.abs((numpy.diff(headings) + 180) % 360 - 180)
-            xs += points[1:-1][turns >= CORNER][:, 0].tolist()
+            moved = numpy.hypot(*numpy.diff(points, axis=0).T) > 0
+            points = points[numpy.r_[True, moved]]     # a point repeated has no heading
+            xs += points[1:-1][numpy.abs(turns_along(points)) >= CORNER_TURN][:, 0].tolist()
         return sorted(xs)
 
     @functools.cached_property
