@@ -302,12 +302,14 @@ def _executable(entries):
 
 def made_executable(folder, depth=3):
     """A TA's fallback: the plain files under `folder` (the package's copy)
-    that are scripts (_script: a #!, a .sh, a .py that imports rospy) but
+    that are scripts (_script: a #!, a .sh, a .py that starts a node) but
     were handed in without the execute bit (mode 644), made executable, as
     a TA would before running them. Their paths in the package."""
-    made = []
-    for entry in _plain_files(folder, depth, lambda found: False):
-        if not os.access(entry.path, os.X_OK) and _script(entry) and len(made) < MAX_NODES:
+    made, files = [], _plain_files(folder, depth, lambda found: False)
+    modules = _modules(files)
+    for entry in files:
+        if not os.access(entry.path, os.X_OK) and _script(entry, modules) and \
+                len(made) < MAX_NODES:
             os.chmod(entry.path, entry.stat(follow_symlinks=False).st_mode | 0o111)
             made.append(os.path.relpath(entry.path, folder))
     return sorted(made)
@@ -315,16 +317,42 @@ def made_executable(folder, depth=3):
 
 def _runnable(folder, depth=3):
     """Whether `folder` holds a script a TA could run (_script)."""
-    return any(_script(entry) for entry in _plain_files(folder, depth, lambda found: False))
+    files = _plain_files(folder, depth, lambda found: False)
+    modules = _modules(files)
+    return any(_script(entry, modules) for entry in files)
 
 
-def _script(entry):
+def _script(entry, modules=frozenset()):
     """Whether a plain file is a script a TA runs: it starts with #!, ends
-    in .sh, or is a .py that is executable or imports rospy (a TA types
-    `python3 draw.py`; the grader runs it so: unstartable_python)."""
-    return _starts_with_shebang(entry.path) or entry.name.endswith('.sh') or \
-        (entry.name.endswith('.py') and (os.access(entry.path, os.X_OK) or
-                                         'rospy' in _imported(entry.path)))
+    in .sh, or is a .py that is executable or starts a rospy node (a TA
+    types `python3 draw.py`; the grader runs it so: unstartable_python).
+    A .py that another file imports (`modules`) is a helper, no node:
+    it needs no #! line, and no TA runs it."""
+    if _starts_with_shebang(entry.path) or entry.name.endswith('.sh'):
+        return True
+    if not entry.name.endswith('.py'):
+        return False
+    return os.access(entry.path, os.X_OK) or \
+        (entry.name[:-3] not in modules and _starts_node(entry.path))
+
+
+def _starts_node(path):
+    """Whether a Python file imports rospy and calls its init_node."""
+    text = read_plain(path, MAX_BYTES) or b''
+    return 'rospy' in _imported(path) and re.search(rb'\binit_node\s*\(', text) is not None
+
+
+def _modules(files):
+    """The names an import statement of a .py among `files` names (whatever
+    else it names: a name of no file matches none)."""
+    names = set()
+    for entry in files:
+        if entry.name.endswith('.py'):
+            text = read_plain(entry.path, MAX_BYTES) or b''
+            for statement in re.findall(rb'^[ \t]*(?:from[ \t]+[\w.]+[ \t]+)?import[ \t][^\n#]*',
+                                        text, re.MULTILINE):
+                names.update(word.decode() for word in re.findall(rb'\w+', statement))
+    return frozenset(names)
 
 
 def _imported(path):

@@ -252,9 +252,16 @@ def test_loose_ros_2_scripts_are_refused_in_words_and_a_rospy_one_without_its_li
 def test_a_rospy_script_handed_in_without_its_line_or_mode_is_run_with_python3(tmp_path):
     """A node written on a machine where it was run as `python3 draw.py`:
     no #! line, mode 644. A TA runs it so; the grader makes it executable
-    and starts it with python3. A helper module that imports no rospy and
-    a plain text file are left as they are."""
-    make(tmp_path, {'lab/scripts/draw.py': 'import math\nimport rospy\nrospy.init_node("d")\n',
+    and starts it with python3. Helper modules are left as they are: one
+    that imports no rospy, one that starts no node, and one that another
+    file imports (it starts the node in a class the script makes); and
+    so is a plain text file."""
+    make(tmp_path, {'lab/scripts/draw.py': 'import math\nimport rospy\n'
+                                           'from moves import Mover\nrospy.init_node("d")\n',
+                    'lab/scripts/moves.py': 'import rospy\nclass Mover:\n'
+                                            '    def __init__(self):\n'
+                                            '        rospy.init_node("m")\n',
+                    'lab/scripts/pens.py': 'import rospy\ndef pen():\n    return 1\n',
                     'lab/scripts/shapes.py': 'import math\nSQUARE = 4\n',
                     'lab/scripts/notes.txt': 'import rospy\n'})
     folder = str(tmp_path / 'lab')
