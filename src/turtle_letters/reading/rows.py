@@ -571,13 +571,15 @@ def _clean_only(reading):
 def _confirmed(row, expected, readings, ahead):
     """`readings` of a row cut for `expected` that did not all read so,
     each letter read in place kept only where it reads CLEAN, the ink
-    beside it across each cut reads as some letter, and the row cut blind
+    beside it across each cut reads CLEAN as some letter, and the row cut blind
     reads it there too, cut with any letter at its place and with any
     letter at every place, as a TA reads a row not knowing the roster.
     A cut sought for a letter that is not there finds ink that fits it: a
     sliver of an O as an I, a gothic C's half as a B; and a cut through a
     letter leaves a piece that is no letter: a square P cut through its
-    bowl is an F, a square B an E. (Rows 2000 to 2499 of the recognition
+    bowl is an F, a square B an E; a piece read loosely holds a stroke of
+    its neighbour's (a cadet's B with a zigzag N's first leg, its last two
+    legs a V credited against AV). (Rows 2000 to 2499 of the recognition
     benchmark, graded against other initials: 38 such letters credited;
     kept so, 5. A touching UEI cut for ELB read its E's bars and the I as
     a B where only the B's place was cut blind.)"""
@@ -585,7 +587,8 @@ def _confirmed(row, expected, readings, ahead):
     for k, (reading, letter) in enumerate(zip(readings, expected)):
         beside = readings[max(0, k - 1):k] + readings[k + 1:k + 2]
         doubted = reading.letter == letter and (
-            reading.best.fit > CLEAN or any(r.letter is None for r in beside) or
+            reading.best.fit > CLEAN or any(r.letter is None or r.best.fit > CLEAN
+                                            for r in beside) or
             not _reads_blind(row, expected, k, ahead))
         kept.append(Reading(None, reading.best, reading.fits) if doubted else reading)
     return kept

@@ -823,6 +823,18 @@ def test_a_letter_credited_in_place_is_read_there_by_a_row_cut_blind():
     assert ''.join(r.letter or '?' for r in read_row(ink, 'UEI')) == 'UEI'
 
 
+@pytest.mark.parametrize('aspect, tilt', [(1.0, 0), (1.3, 10), (1.3, -20)])
+def test_a_letter_cut_beside_one_read_loosely_earns_nothing(aspect, tilt):
+    """A cadet's B and zigzag N, touching, graded against AV: the N's last
+    two legs are a V within CLEAN, and the B with the N's first leg reads
+    a B, loosely. The V was credited; a TA reads BN, and the row still
+    reads so."""
+    ink = turned(cadets('BN', aspect), tilt, (0.0, 0.0))
+    read = ''.join(r.letter or '?' for r in read_row(ink, 'AV'))
+    assert not any(r == o != d for r, o, d in zip(read, 'AV', 'BN')), read
+    assert ''.join(r.letter or '?' for r in read_row(ink, 'BN')) == 'BN'
+
+
 @pytest.mark.parametrize('family, drawn, other, aspect, gap, tilt', [
     ('cadets', 'PGM', 'FUM', 0.989, -0.0225, -34.1),
     ('cadets', 'BCS', 'EFI', 1.418, -0.0237, 28.2),
