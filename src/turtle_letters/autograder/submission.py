@@ -333,13 +333,12 @@ def _script(entry, modules=frozenset()):
     if not entry.name.endswith('.py'):
         return False
     return os.access(entry.path, os.X_OK) or \
-        (entry.name[:-3] not in modules and _starts_node(entry.path))
+        (entry.name[:-3] not in modules and _starts_node(_python(entry.path)))
 
 
-def _starts_node(path):
-    """Whether a Python file imports rospy and calls its init_node."""
-    text = read_plain(path, MAX_BYTES) or b''
-    return 'rospy' in _imported(path) and re.search(rb'\binit_node\s*\(', text) is not None
+def _starts_node(text):
+    """Whether a Python file's `text` imports rospy and calls its init_node."""
+    return 'rospy' in _imported(text) and re.search(rb'\binit_node\s*\(', text) is not None
 
 
 def _modules(files):
@@ -348,16 +347,20 @@ def _modules(files):
     names = set()
     for entry in files:
         if entry.name.endswith('.py'):
-            text = read_plain(entry.path, MAX_BYTES) or b''
+            text = _python(entry.path)
             for statement in re.findall(rb'^[ \t]*(?:from[ \t]+[\w.]+[ \t]+)?import[ \t][^\n#]*',
                                         text, re.MULTILINE):
                 names.update(word.decode() for word in re.findall(rb'\w+', statement))
     return frozenset(names)
 
 
-def _imported(path):
-    """Which of rospy and rclpy (ROS 2's) a Python file imports."""
-    text = read_plain(path, MAX_BYTES) or b''
+def _python(path):
+    """A Python file's text, its first MAX_BYTES (b'' where it cannot be read)."""
+    return read_plain(path, MAX_BYTES) or b''
+
+
+def _imported(text):
+    """Which of rospy and rclpy (ROS 2's) a Python file's `text` imports."""
     return {module for module in ('rospy', 'rclpy')
             if re.search(rb'^\s*(import|from)\s+' + module.encode() + rb'\b', text, re.MULTILINE)}
 
@@ -369,7 +372,7 @@ def _ros2_script(folder, depth=3):
     found = {}
     for entry in _plain_files(folder, depth, lambda found: False):
         if entry.name.endswith('.py'):
-            for module in _imported(entry.path):
+            for module in _imported(_python(entry.path)):
                 found.setdefault(module, entry.name)
     return '' if 'rospy' in found else found.get('rclpy', '')
 
