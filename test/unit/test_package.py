@@ -15,7 +15,8 @@ KEYS = {'rospy': 'rospy', 'rosgraph': 'rosgraph', 'actionlib': 'actionlib',
         'tqdm': 'python3-tqdm', 'PyQt5': 'python3-pyqt5', 'svgelements': 'python3-svgelements',
         'numpy': 'python3-numpy', 'scipy': 'python3-scipy', 'fontTools': 'python3-fonttools', 'tesserocr': 'python3-tesserocr', 'PIL': 'python3-pil',
         'rospkg': 'python3-rospkg', 'rosgraph_msgs': 'rosgraph_msgs', 'roslib': 'roslib',
-        'sensor_msgs': 'sensor_msgs', 'tornado': 'python3-tornado'}
+        'sensor_msgs': 'sensor_msgs', 'tornado': 'python3-tornado',
+        'catkin_pkg': 'python3-catkin-pkg'}
 
 
 def run_dependencies():

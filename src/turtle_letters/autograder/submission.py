@@ -10,6 +10,8 @@ import stat
 import xml.etree.ElementTree as ElementTree
 from typing import List, NamedTuple, Optional
 
+from catkin_pkg.condition import evaluate_condition
+
 from ..isolation.files import read_plain, remove_tree
 
 SKIPPED = {'.git', 'build', 'devel', 'install', 'logs', '__pycache__'}
@@ -22,6 +24,8 @@ DEPENDS = ('depend', 'build_depend', 'build_export_depend', 'exec_depend', 'run_
            'test_depend')      # package.xml's tags naming a package it needs
 SIMULATOR = 'turtlesim'  # a package of this name is the grader's to run, not the submission's
 LOOSE = 'handed_in'      # the package the grader wraps scripts handed in without a package.xml in
+# What a package.xml's conditions (format 3) are evaluated with on the course's machine
+NOETIC = {'ROS_VERSION': '1', 'ROS_PYTHON_VERSION': '3', 'ROS_DISTRO': 'noetic'}
 
 
 class Package(NamedTuple):
@@ -160,13 +164,24 @@ def package_name(folder):
 
 def ros2_build(folder):
     """The ROS 2 build type (ament_python, ament_cmake) a package's
-    package.xml builds it with, or '': catkin builds none of them."""
+    package.xml builds it with, or '': catkin builds none of them. A tool
+    named under a condition false on Noetic (`$ROS_VERSION == 2`, in a
+    package written for both ROS 1 and ROS 2) is none of its tools there."""
     root = _xml(os.path.join(folder, 'package.xml'))
     if root is None:
         return ''
-    named = [root.findtext('export/build_type', '')] + \
-        [tool.text or '' for tool in root.iter('buildtool_depend')]
+    named = [tool.text or '' for tool in root.findall('export/build_type') +
+             root.findall('buildtool_depend') if _on_noetic(tool.get('condition'))]
     return next((tool.strip() for tool in named if tool.strip().startswith('ament')), '')
+
+
+def _on_noetic(condition):
+    """Whether a package.xml's `condition` holds on Noetic (catkin_pkg's
+    reading of it); one that does not parse counts, as nothing says it does not."""
+    try:
+        return evaluate_condition(condition, NOETIC)
+    except ValueError:
+        return True
 
 
 def find(top) -> Package:

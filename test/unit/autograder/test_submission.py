@@ -231,6 +231,25 @@ def test_a_ros_2_package_beside_the_lab_is_left_out_and_said(tmp_path):
                              'which catkin does not build']
 
 
+def test_a_package_written_for_both_ros_1_and_ros_2_is_a_catkin_package_on_noetic(tmp_path):
+    """A package.xml of format 3 may name catkin where $ROS_VERSION is 1
+    and ament where it is 2: catkin builds it on Noetic. (It was refused
+    as a ROS 2 package: a scratch cadet's L, 0/100.)"""
+    make(tmp_path, {'lab/package.xml': (
+        '<package format="3"><name>lab</name>'
+        '<buildtool_depend condition="$ROS_VERSION == 1">catkin</buildtool_depend>'
+        '<buildtool_depend condition="$ROS_VERSION == 2">ament_cmake</buildtool_depend>'
+        '<export><build_type condition="$ROS_VERSION == 2">ament_cmake</build_type>'
+        '<build_type condition="$ROS_VERSION == 1">catkin</build_type></export></package>'),
+        'lab/launch/x.launch': LAB})
+    assert submission.ros2_build(str(tmp_path / 'lab')) == ''
+    package = find(str(tmp_path))
+    assert (package.name, package.problem) == ('lab', '')
+    make(tmp_path, {'two/package.xml': ROS2.format('two', 'ament_cmake', 'ament_cmake').replace(
+        '<buildtool_depend>', '<buildtool_depend condition="$ROS_VERSION == 2">')})
+    assert submission.ros2_build(str(tmp_path / 'two')) == 'ament_cmake'
+
+
 def test_loose_ros_2_scripts_are_refused_in_words_and_a_rospy_one_without_its_line_is_run(
         tmp_path):
     """Scripts handed in without a package.xml: one that imports rclpy (a
