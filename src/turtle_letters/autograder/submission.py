@@ -1,7 +1,8 @@
 """A cadet's submission as handed in: the catkin package somewhere inside
 their folder (or, scripts handed in without one, a package the grader
 wraps them in), its name, and the launch file the lab runs. No ROS here: the
-files are read as plain XML, never run (a launch file's $(eval) is Python).
+files are read as plain XML, never run (a launch file's $(eval) is Python);
+a package.xml's conditions as catkin reads them (catkin_pkg, pure Python).
 """
 import os
 import re
