@@ -14,6 +14,9 @@ CLOSED = 0.03       # share of the height within which a line's ends meet: a con
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 LONGEST = 50        # heights of ink a letter is drawn with, at most: more is a flood (flooded)
 STRAIGHT = 0.03     # share of its length within which ink lies along one line: a bare stroke
+RUN_TURN = 10       # degrees a line's last straight run strays from its last heading, at most
+OVERSHOOT = 1 / 3   # share of that run that may stick out past the rest of the ink: driven on
+LONG_RUN = 0.5      # ... where the run is this share of the rest's larger side long, at least
 
 
 def box(points):
@@ -128,6 +131,51 @@ def turns_along(line):
     steps = numpy.diff(line, axis=0)
     heading = numpy.degrees(numpy.arctan2(steps[:, 1], steps[:, 0]))
     return (numpy.diff(heading) + 180.0) % 360.0 - 180.0
+
+
+def ends_driven_on(ink):
+    """`ink` with the end of each line cut back where its last straight run
+    (within RUN_TURN) is LONG_RUN of the rest of the ink or longer and goes
+    on past the rest's span, along the run's own axis (across or up), by
+    OVERSHOOT of itself or less: turtlesim drives a command on for up to a
+    second, and a timed zigzag M's last leg ran a third past its other
+    feet. None where no end is so."""
+    trimmed, changed = [list(line) for line in ink], False
+    for k, line in enumerate(ink):
+        run = _last_run(line)
+        if run is None:
+            continue
+        rest = [p for other in ink[:k] + ink[k + 1:] for p in other] + list(line[:run + 1])
+        if len(rest) < 2:
+            continue
+        x0, y0, w, h = box(rest)
+        start, end = numpy.asarray(line[run], float), numpy.asarray(line[-1], float)
+        long = math.dist(start, end)
+        # how far along the run it leaves the rest's span on the run's own axis (1: it does not)
+        axis = int(abs(end[1] - start[1]) > abs(end[0] - start[0]))
+        lo, hi = (x0, x0 + w) if axis == 0 else (y0, y0 + h)
+        edge = lo if end[axis] < lo else hi if end[axis] > hi else None
+        leaves = 1.0 if edge is None else (edge - start[axis]) / (end[axis] - start[axis])
+        if long >= LONG_RUN * max(w, h) and 1 - OVERSHOOT <= leaves < 1 - CLOSED:
+            cut = tuple(start + (end - start) * leaves)
+            kept = [p for p in line[run:] if numpy.dot(numpy.subtract(p, start), end - start)
+                    < leaves * long * long]
+            trimmed[k], changed = list(line[:run]) + kept + [cut], True
+    return trimmed if changed else None
+
+
+def _last_run(line):
+    """Index of the point where `line`'s last straight run begins (its heading
+    within RUN_TURN of its last); None where the line has no length."""
+    points = numpy.asarray(line, dtype=float).reshape(-1, 2)
+    steps = numpy.diff(points, axis=0)
+    moved = numpy.flatnonzero(numpy.hypot(*steps.T) > 0)
+    if not len(moved):
+        return None
+    heading = numpy.arctan2(steps[moved, 1], steps[moved, 0])
+    off = numpy.abs((numpy.degrees(heading - heading[-1]) + 180.0) % 360.0 - 180.0)
+    bent = numpy.flatnonzero(off > RUN_TURN)
+    return int(moved[bent[-1]] + 1) if len(bent) else 0
 
 
 def turned(lines, degrees, centre):

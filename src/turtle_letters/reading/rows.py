@@ -23,7 +23,7 @@ from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from .ink import box, closed, dash, flooded, inside, outline, samples, turned, turns_along
-from .forms import CLEAN, candidates, templates
+from .forms import CLEAN, READABLE, candidates, templates
 from .recognition import (MOST_TILT, SAMPLE, TILTS, Reading, Unfinished, best_fit, plainly_other,
                           read)
 
@@ -35,6 +35,7 @@ NEAR_TILTS = (-5, 5)    # degrees a part is tried off level when finding where t
 TIE = 0.01          # cuts whose fits differ by less fit as well
 CORNER_TURN = 45    # degrees a line turns at a corner a row may be cut at, at least
 NEAR_CORNERS = 2    # corners within a tenth of a share of the best cut also tried, at most
+FAR_CORNERS = 3     # ... and corners within the cut's reach, nearest it first, at most
 BARE = 0.2          # a form narrower than this share of its height is a bare stroke
 ANY = '?'           # in a text to cut a row into, a letter that may be any
 ACROSS = 75         # degrees off a row's slope past which a letter of it lies across the row
@@ -252,6 +253,17 @@ def cut(row, expected, ahead=True):
         fits += [(fit, x) for fit, x in _scored(corners[:NEAR_CORNERS], before,
                                                 after if ahead else None) if fit <= CLEAN]
         best = min(f for f, _ in fits)
+        # the corners in reach nearest it, a hair to either side (where one letter's last
+        # stroke runs into the next one's first, the corner is neither's: a zigzag M's
+        # last foot is its F's), kept where they fit within CLEAN, or READABLE where no
+        # cut tried reads: the grid cut the real MF's M a tenth of its last leg short
+        far = sorted({x + side for x in row.corners if options[0] <= x <= options[-1]
+                      for side in (-share / 100, share / 100) if left < x + side < end},
+                     key=lambda x: abs(x - nearest))[:2 * FAR_CORNERS]
+        limit = READABLE if best > READABLE else CLEAN
+        fits += [(fit, x) for fit, x in _scored(far, before, after if ahead else None)
+                 if fit <= limit]
+        best = min(f for f, _ in fits)
         # of the cuts that fit as well, the one through the least ink (the leftmost of those)
         cuts.append(min(sorted(x for f, x in fits if f <= best + TIE),
                         key=lambda x: row.ink_near(x, share / 40)))
@@ -442,14 +454,17 @@ def read_row(ink, expected='') -> List[Reading]:
             return [row.reading(group) for group in apart(ink)]
     except Unfinished:
         return unread
-    best = _best_way(ink, expected)
-    return _unobjected(ink, best, expected) if best else unread
+    best, level = _best_way(ink, expected)
+    return _unobjected(level, best, expected) if best else unread
 
 
-def _unobjected(ink, readings, expected):
+def _unobjected(level, readings, expected):
     """`readings` of a row read whole as `expected`, a letter read past
-    CLEAN dropped where the row read blind (read_blind) reads a letter in
-    every place, and another plainly in its place (recognition.plainly_other):
+    CLEAN dropped where the row read blind as it lay when read (`level`:
+    _blind) reads a letter in every place, and another plainly in its place
+    (recognition.plainly_other; read blind at its likelier slope instead, a
+    zigzag M run into its F, read level as NF, was an M and a C 20 degrees
+    off, and the N, the M's first three legs, stood):
     a cut sought for a letter that is not there may find ink that fits it
     loosely (a cadet's BP cut for EP read its B as an E within 8% of its
     height; cut blind, BP within 2%). Only a row read whole blind objects:
@@ -462,7 +477,7 @@ def _unobjected(ink, readings, expected):
     if not loose or _score(readings, expected)[0] < len(expected):
         return readings
     try:
-        blind = read_blind(ink, len(expected))
+        blind = _blind(row_of(level), len(expected))
     except Unfinished:
         blind = None        # not checked: not credited
 
@@ -474,10 +489,10 @@ def _unobjected(ink, readings, expected):
 
 
 def _best_way(ink, expected):
-    """The readings of the way (levels) that reads the most of `expected` in
-    place, of those read whole before the reading's effort was spent; None
-    where none was."""
-    best = None
+    """(the readings of the way (levels) that reads the most of `expected` in
+    place, of those read whole before the reading's effort was spent, and the
+    ink as that way lays it); (None, None) where none was."""
+    best, chosen = None, None
     try:
         ways = levels(ink, len(expected))
         for tilt, centre, level in ways:
@@ -486,12 +501,12 @@ def _best_way(ink, expected):
             readings = _read_letters(row_of(level), expected, floor, back)
             if readings is not None:
                 if best is None or _score(readings, expected) > _score(best, expected):
-                    best = readings
+                    best, chosen = readings, level
             if _score(best, expected)[0] == len(expected):
                 break
     except Unfinished:
         pass
-    return best
+    return best, chosen
 
 
 def _turned_back(reading, tilt, centre, slope=0):

@@ -2,6 +2,8 @@
 drawn round them and past another line of writing, as a TA reads them,
 and nothing read there that is not drawn. The ink is the builtin font's,
 placed by the tests' own helpers."""
+import math
+
 import pytest
 
 from support.glyph_rows import row
@@ -185,3 +187,58 @@ def test_past_its_bound_a_canvas_reads_no_letter_by_either_reader(rows_afresh, m
     monkeypatch.setattr(recognition, 'FITTINGS', 3)
     assert letters(read_page(ink, [], 'ZT')) == '??'
     assert read_text(ink, 'ZT').text == ''
+
+
+def driven(start, moves, step=0.016):
+    """One line driven from `start` by `moves` ((dx, dy) m, each at 1 m/s),
+    a point each of turtlesim's steps: a holonomic timed drawing."""
+    x, y = start
+    line = [(x, y)]
+    for dx, dy in moves:
+        n = max(1, round(math.hypot(dx, dy) / step))
+        line += [(x + dx * i / n, y + dy * i / n) for i in range(1, n + 1)]
+        x, y = x + dx, y + dy
+    return line
+
+
+def m_on_f(run_on=0.0):
+    """An F (stem down from its top bar, middle bar there and back), then a
+    zigzag M drawn leftwards from the stem's foot, its valleys on the
+    baseline, its last leg driven on `run_on` of a leg's length past its
+    foot: a real class's MF, whose last command ran on."""
+    leg = (-0.9, 3.0)
+    return [driven((5.5, 5.5), [(2, 0), (-2, 0), (0, -2), (2, 0), (-2, 0), (0, -2),
+                                leg, (leg[0], -leg[1]), leg,
+                                (leg[0] * (1 + run_on), -leg[1] * (1 + run_on))])]
+
+
+@pytest.mark.parametrize('run_on', [0.0, 0.3])
+def test_a_zigzag_m_run_into_its_f_reads_cut_at_their_corner_and_cut_back(rows_afresh, run_on):
+    """Cut on a tenth of an even share, the M lost its last leg's foot or the F
+    its stem: the corner they meet at is the cut. Its last leg driven on a
+    third past the other feet (a second of turtlesim's), the M's box is no
+    M's: read with that end cut back, and the row says so."""
+    page = read_page(m_on_f(run_on), [], 'MF')
+    assert letters(page) == 'MF'
+    assert ('ran on past the rest' in page.where) == (run_on > 0)
+    for other in ('NF', 'AF', 'MP', 'WE'):
+        read = letters(read_page(m_on_f(run_on), [], other))
+        assert all(r != o or o == d for r, o, d in zip(read, other, 'MF')), (other, read)
+
+
+@pytest.mark.parametrize('letter, line, cut_back', [
+    ('zigzag M', [(0, 0), (0.9, 3), (1.8, 0), (2.7, 3), (3.9, -1)], True),
+    ('P, stem last', [(0, 1.5), (1, 1.5), (1, 3), (0, 3), (0, 0)], False),
+    ('L, foot last', [(0, 3), (0, 0), (2, 0)], False),
+    ('J, stem last', [(0, 1), (0, 0), (1, 0), (1, 3)], False),
+    ('M, its leg run on 60% more', [(0, 0), (0.9, 3), (1.8, 0), (2.7, 3), (4.14, -1.8)], False)])
+def test_only_a_stroke_run_on_a_third_of_itself_or_less_is_cut_back(letter, line, cut_back):
+    """A stroke that goes on a third of its length or less past the rest of
+    the ink, along its own axis, was driven on; a P's stem, an L's foot and a
+    J's stem go on farther, and are their letters."""
+    from turtle_letters.reading.ink import ends_driven_on
+    trimmed = ends_driven_on([driven(line[0], [(b[0] - a[0], b[1] - a[1])
+                                               for a, b in zip(line, line[1:])])])
+    assert (trimmed is not None) == cut_back, letter
+    if cut_back:
+        assert min(y for _, y in trimmed[0]) == pytest.approx(0.0, abs=0.02)
