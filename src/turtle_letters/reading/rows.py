@@ -44,6 +44,7 @@ AS_LOW = 1.3        # a turn leaving a row this share as high as the lowest does
 FAR_OFF = 30        # degrees off level past which, on a tie, neither way up of a row is taken
 CLEAR_LINES = 40    # lines of a row past which its letters are not sought clear of each other
 CLEAR_POINTS = 400  # ... and the points of a line compared, at most
+NUB = 0.05          # a piece of a line a cut severs, shorter than this share of the height: no one's
 # Degrees off its row's level (levels) a letter of a row is tried at, at most, before
 # the finer steps: a row's letters lean alike, and a part of a row fit a letter of
 # its own at 35 or 45 degrees that none of the row's was (the recognition benchmark's
@@ -98,11 +99,12 @@ class Row:
 
     def letters(self, cuts):
         """Each letter between `cuts` (ascending x), as (its ink alone, its
-        ink reaching SAMPLE of the height past its cuts: a stroke two
-        touching letters share, an M's last leg as an F's stem, is each
-        letter's)."""
+        ink reaching NUB of the height past its cuts: a stroke two touching
+        letters share, an M's last leg as an F's stem, is each letter's; a
+        cut as near it as the nub a cut may leave, the side a cadet's U
+        shares with its square O, too)."""
         edges = list(zip([-math.inf] + list(cuts), list(cuts) + [math.inf]))
-        reach = SAMPLE * self.height
+        reach = NUB * self.height
         return [(self.between(lo, hi), self.between(lo - reach, hi + reach)) for lo, hi in edges]
 
     def share(self, part):
@@ -110,12 +112,17 @@ class Row:
         return box([p for line in part for p in line])[3] / self.height if part else 0.0
 
     def between(self, lo, hi):
-        """The ink between x `lo` (not included) and `hi`: each line's runs of points there."""
-        parts = []
+        """The ink between x `lo` (not included) and `hi`: each line's runs of
+        points there, but a nub: a run the cut severs from the rest of its
+        line, shorter than NUB of the height, is neither letter's (a real
+        class's F, its bar driven back a little short of its stem, left a
+        nub past the stem, in the M beside it, a metre above the M)."""
+        parts, nub = [], NUB * self.height
         for line, xs in zip(self.fine, self._across):
             inside = numpy.r_[False, (xs > lo) & (xs <= hi), False]
             edges = numpy.flatnonzero(inside[1:] != inside[:-1])
-            parts += [line[start:stop] for start, stop in zip(edges[::2], edges[1::2])]
+            parts += [line[start:stop] for start, stop in zip(edges[::2], edges[1::2])
+                      if (start == 0 and stop == len(line)) or _length(line[start:stop]) >= nub]
         return parts
 
     def ink_near(self, x, within):
@@ -269,6 +276,13 @@ def cut(row, expected, ahead=True):
                         key=lambda x: row.ink_near(x, share / 40)))
         left = cuts[-1]
     return cuts
+
+
+def _length(run):
+    """How long a run of points is, along it (ink.length, in numpy: it is
+    asked of every piece of every cut tried)."""
+    return float(numpy.hypot(*numpy.diff(numpy.asarray(run, dtype=float), axis=0).T).sum()) \
+        if len(run) > 1 else 0.0
 
 
 def narrow(ink):

@@ -201,28 +201,31 @@ def driven(start, moves, step=0.016):
     return line
 
 
-def m_on_f(run_on=0.0):
-    """An F (stem down from its top bar, middle bar there and back), then a
-    zigzag M drawn leftwards from the stem's foot, its valleys on the
-    baseline, its last leg driven on `run_on` of a leg's length past its
-    foot: a real class's MF, whose last command ran on."""
+def m_on_f(run_on=0.0, short=0.0):
+    """An F (stem down from its top bar, `short` m short of the bar's end; middle
+    bar there and back), then a zigzag M drawn leftwards from the stem's foot,
+    its valleys on the baseline, its last leg driven on `run_on` of a leg's
+    length past its foot: a real class's MF, whose last command ran on, and
+    whose top bar came back a tenth of a metre short in one run."""
     leg = (-0.9, 3.0)
-    return [driven((5.5, 5.5), [(2, 0), (-2, 0), (0, -2), (2, 0), (-2, 0), (0, -2),
+    return [driven((5.5, 5.5), [(2, 0), (-2 + short, 0), (0, -2), (2, 0), (-2, 0), (0, -2),
                                 leg, (leg[0], -leg[1]), leg,
                                 (leg[0] * (1 + run_on), -leg[1] * (1 + run_on))])]
 
 
-@pytest.mark.parametrize('run_on', [0.0, 0.3])
-def test_a_zigzag_m_run_into_its_f_reads_cut_at_their_corner_and_cut_back(rows_afresh, run_on):
+@pytest.mark.parametrize('run_on, short', [(0.0, 0.0), (0.3, 0.0), (0.0, 0.1), (0.3, 0.1)])
+def test_a_zigzag_m_run_into_its_f_reads_cut_at_their_corner_and_cut_back(rows_afresh, run_on,
+                                                                          short):
     """Cut on a tenth of an even share, the M lost its last leg's foot or the F
     its stem: the corner they meet at is the cut. Its last leg driven on a
     third past the other feet (a second of turtlesim's), the M's box is no
-    M's: read with that end cut back, and the row says so."""
-    page = read_page(m_on_f(run_on), [], 'MF')
+    M's: read with that end cut back, and the row says so. The nub of a bar
+    driven back short of the stem, cut off the bar, is neither letter's."""
+    page = read_page(m_on_f(run_on, short), [], 'MF')
     assert letters(page) == 'MF'
     assert ('ran on past the rest' in page.where) == (run_on > 0)
     for other in ('NF', 'AF', 'MP', 'WE'):
-        read = letters(read_page(m_on_f(run_on), [], other))
+        read = letters(read_page(m_on_f(run_on, short), [], other))
         assert all(r != o or o == d for r, o, d in zip(read, other, 'MF')), (other, read)
 
 

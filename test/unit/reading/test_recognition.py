@@ -11,7 +11,7 @@ from turtle_letters.reading.ink import LONGEST, MAX_POINTS, flooded, outline, th
 from turtle_letters.reading.ocr import read_text
 from turtle_letters.reading.recognition import read
 from turtle_letters.reading.forms import READABLE
-from turtle_letters.reading.rows import apart, in_colours, read_row
+from turtle_letters.reading.rows import Row, apart, in_colours, read_row
 from turtle_letters.letters.font import FONT
 
 from support.cadet_paths import (arc, driven, forward, placed, retraced, rounded, turn,
@@ -917,3 +917,16 @@ def test_a_row_read_whole_for_other_initials_earns_no_letter_the_row_read_blind_
     ink = turned(cadets('BP', 1.705, -0.0156), 4.59, (0.0, 0.0))
     assert ''.join(r.letter or '?' for r in read_row(ink, 'EP')) == '?P'
     assert ''.join(r.letter or '?' for r in read_row(ink, 'BP')) == 'BP'
+
+
+@pytest.mark.parametrize('off', [-0.04, 0.04])
+def test_a_side_two_letters_share_is_each_ones_with_a_cut_a_nub_off_it(off):
+    """A cadet's square O and U, the U's first side the O's last: cut a nub
+    (under 5% of the height) to either side of that side, each letter with
+    the strokes it shares reads as itself (a cut 4% right of it, among
+    cuts that fit as well once a nub is no letter's, left the U a J)."""
+    ink = cadets('OU')
+    row = Row(ink)
+    side = max(x for x, _ in ink[0])
+    (_, o_shared), (_, u_shared) = row.letters([side + off * row.height])
+    assert read(o_shared).letter == 'O' and read(u_shared).letter == 'U'
