@@ -22,7 +22,8 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
-from .ink import box, closed, dash, flooded, inside, outline, samples, turned, turns_along
+from .ink import (box, closed, dash, flooded, inside, length, outline, samples, turned,
+                  turns_along)
 from .forms import CLEAN, READABLE, candidates, templates
 from .recognition import (MOST_TILT, SAMPLE, TILTS, Reading, Unfinished, best_fit, plainly_other,
                           read)
@@ -122,7 +123,7 @@ class Row:
             inside = numpy.r_[False, (xs > lo) & (xs <= hi), False]
             edges = numpy.flatnonzero(inside[1:] != inside[:-1])
             parts += [line[start:stop] for start, stop in zip(edges[::2], edges[1::2])
-                      if (start == 0 and stop == len(line)) or _length(line[start:stop]) >= nub]
+                      if (start == 0 and stop == len(line)) or length([line[start:stop]]) >= nub]
         return parts
 
     def ink_near(self, x, within):
@@ -276,13 +277,6 @@ def cut(row, expected, ahead=True):
                         key=lambda x: row.ink_near(x, share / 40)))
         left = cuts[-1]
     return cuts
-
-
-def _length(run):
-    """How long a run of points is, along it (ink.length, in numpy: it is
-    asked of every piece of every cut tried)."""
-    return float(numpy.hypot(*numpy.diff(numpy.asarray(run, dtype=float), axis=0).T).sum()) \
-        if len(run) > 1 else 0.0
 
 
 def narrow(ink):
