@@ -269,23 +269,30 @@ def _letter_by_letter(ink, expected, needed):
 
 def told_apart(ink, readings):
     """The strokes' `readings` of one letter (rows.read_row), its letter
-    dropped where another letter fits within CLEAN too and OCR, reading the
-    ink as it lies, reads that other one, CONFIDENT or more: where the
-    strokes see two letters plainly, OCR tells them apart whichever the
-    roster says (DejaVu Serif Bold's J drawn round its edge is an I within
-    2.2% of its height and a J within 6.1% to the strokes, a J 84 to 95%
-    sure to OCR level; turned, OCR takes a Z for an N: only level counts)."""
+    dropped where another letter fits within CLEAN too and OCR reads that
+    other one, as the ink lies (CONFIDENT or more) or turned back by the
+    tilt the strokes fit it at (CONFIDENT_TURNED): where the strokes see two
+    letters plainly, OCR tells them apart whichever the roster says
+    (DejaVu Serif Bold's J drawn round its edge is an I within 2.2% of its
+    height and a J within 6.1% to the strokes, a J 84 to 95% sure to OCR
+    level; tilted 38 degrees, a J to OCR only turned back). Not turned
+    for the letter's twin (recognition.TWINS): OCR takes a Z turned a
+    quarter for an N."""
     if len(readings) != 1 or readings[0].letter is None or readings[0].best.fit > CLEAN:
         return readings
     reading = readings[0]
     rivals = sorted(c for c, f in reading.fits.items() if c != reading.letter and f.fit <= CLEAN)
     if not rivals:
         return readings
-    level = thinned(ink, box([p for line in ink for p in line])[3] / 200)
+    x, y, w, h = box([p for line in ink for p in line])
+    level = thinned(ink, h / 200)
     for rival in rivals:
-        text, confidence = _read_picture(level, rival)
-        if text == rival and confidence >= CONFIDENT:
-            return [Reading(None, reading.best, reading.fits)]
+        tilt = reading.fits[rival].tilt if rival != TWINS.get(reading.letter) else 0
+        for turn in ((0, tilt) if tilt else (0,)):
+            view = turned(level, -turn, (x + w / 2, y + h / 2)) if turn else level
+            text, confidence = _read_picture(view, rival, _needed(turn))
+            if text == rival and confidence >= _needed(turn):
+                return [Reading(None, reading.best, reading.fits)]
     return readings
 
 
