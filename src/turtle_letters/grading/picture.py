@@ -245,8 +245,19 @@ def _letters_over(painter, letters, view):
                     painter.drawPoint(px(stroke[0]))
         corner_px = px((min(x for s in strokes for x, _ in s), max(y for s in strokes for _, y in s))
                        ) if any(strokes) else QPointF(left + 2, upper + 18 * (k + 1))
-        painter.fillRect(QRectF(corner_px.x(), corner_px.y() - 16, 9 * len(label) + 6, 15),
-                         QColor('white'))
+        box = label_box(corner_px, label, view)
+        painter.fillRect(box, QColor('white'))
         painter.setPen(QColor('black'))
-        painter.drawText(QPointF(corner_px.x() + 3, corner_px.y() - 4), label)
+        painter.drawText(QPointF(box.left() + 3, box.bottom() - 3), label)
     painter.setClipping(False)
+
+
+def label_box(corner_px, label, view):
+    """Where a letter's `label` is written: a box above its top left corner
+    (`corner_px`), moved in as far as the view's edges need (a letter at
+    the right edge, an l beside an A, had its label cut off there)."""
+    left, upper, scale, _, size = view
+    width = 9 * len(label) + 6
+    x = max(left, min(corner_px.x(), left + size * scale - width))
+    y = max(upper, corner_px.y() - 16)
+    return QRectF(x, y, width, 15)

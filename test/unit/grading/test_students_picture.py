@@ -85,6 +85,24 @@ def test_a_letter_no_form_fits_is_named_not_drawn(tmp_path):
                            for x, y in changed)
 
 
+def test_a_letter_at_the_edge_of_the_ink_is_named_in_full(tmp_path):
+    """An A and, at the right edge of the ink, a bare stroke read as an I
+    not expected (a real class's Al): the I's label, a white box as wide as
+    its name, is written whole inside the enlarged ink's frame, moved in
+    from the edge (it was cut off there)."""
+    a = [[(1.0, 2.0), (1.5, 5.0), (2.0, 2.0)], [(1.25, 3.5), (1.75, 3.5)]]
+    stroke = [[(3.0, 2.0), (3.0, 5.0)]]
+    label = 'I: not expected'
+    path = str(tmp_path / 'al.png')
+    draw_ink(path, a + stroke, [(*GREEN, 3)] * 3, BACKGROUND,
+             [('A', a), (label, stroke)], 'an A and an I read')
+    image = QImage(path)
+    widest = max(sum(colour_at(image, x, y) == WHITE
+                     for x in range(CANVAS_PIXELS + 20, image.width()))
+                 for y in range(40, image.height() - 10))
+    assert widest >= 9 * len(label) + 6
+
+
 def black_in_zoom(image):
     """How many black pixels the enlarged ink's frame holds, on a grid of 2 px."""
     return sum(colour_at(image, x, y) == (0, 0, 0)
