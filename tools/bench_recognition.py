@@ -9,7 +9,9 @@ and-move forms cadets draw (forms.VARIANTS); each at a random tilt
 walked at a random speed in turtlesim's 16 ms steps; rows of 2 or 3 letters
 touching or nearly. Each drawing is graded against its own letters,
 against another letter or row at random, and against each text either
-reader takes it for (its best-fitting letters, OCR's text): a wrong letter
+reader takes it for (its best-fitting letters, OCR's text) or may confuse
+it with (one place's letter swapped for the one fitting it next best,
+confusions()): a wrong letter
 credited, the figure that must stay 0, is a drawing any letter of which is
 credited where another was drawn (the whole text, or one letter in its
 place: a row that does not read whole earns a share for each letter read
@@ -85,7 +87,8 @@ def readers(ink, expected):
     """(the letters the strokes read, '?' for none; the letters the grader
     credits them with, OCR telling apart two letters they see cleanly
     (ocr.told_apart); whether OCR read the text; seconds of each; the texts
-    the two take the ink for where not `expected`), both asked: the figures
+    the two take the ink for or may confuse it with (confusions), where not
+    `expected`), both asked: the figures
     of each alone. (The grader asks OCR only where the strokes do not read
     the expected text: the two combined count its time only there.)"""
     started = time.monotonic()
@@ -95,10 +98,22 @@ def readers(ink, expected):
     middle = time.monotonic()
     ocr = read_text(page.writing.ink, expected)
     seconds = (middle - started, time.monotonic() - middle)
-    taken = {_letters(readings, guessed=True), ocr.text}
+    taken = {_letters(readings, guessed=True), ocr.text, *confusions(readings, expected)}
     taken = {text for text in taken if len(text) == len(expected) and text.isalpha()}
     return _letters(readings), _letters(told), supports(ocr, expected, told), seconds, \
         taken - {expected}
+
+
+def confusions(readings, expected):
+    """`expected` with the letter of one place swapped for the one that
+    fits the ink there best after it (`readings`: the strokes'), a text
+    for each place: the likeliest letter a roster may say that was not
+    drawn there, read or not."""
+    texts = []
+    for k, (reading, letter) in enumerate(zip(readings, expected)):
+        rivals = sorted((fit.fit, other) for other, fit in reading.fits.items() if other != letter)
+        texts += [expected[:k] + rivals[0][1] + expected[k + 1:]] if rivals else []
+    return texts
 
 
 def _letters(readings, guessed=False):
