@@ -506,9 +506,9 @@ def _bettered(row, readings, expected, k):
     there next best, reads within CLEAN in its place where the row is cut
     for it (looking ahead), the row's other letters still read in place:
     that ink is that letter, drawn cleanly, and the one expected a loose
-    fit the cut found for it (a timesi GO cut for GD read its O and the
-    G's edge as a D within 8.5% of the height; cut for GO, the O reads
-    within 1%). Where the reading's effort is spent first, it is not."""
+    fit the cut found for it (a timesi GO cut for GD read a D where its O
+    is, within 8.5% of the height; cut for GO, the O reads within 1%).
+    Where the reading's effort is spent first, it is not."""
     if len(apart(row.ink)) >= len(expected):
         return False
     fits = sorted((f.fit, c) for c, f in readings[k].fits.items() if c != expected[k])

@@ -859,7 +859,7 @@ def test_a_letter_cut_beside_a_piece_that_is_no_letter_earns_nothing(family, dra
 def test_a_letter_read_loosely_where_another_cut_for_reads_cleanly_earns_nothing(
         family, drawn, other, aspect, gap, tilt):
     """Cut for initials one letter off its own, a row finds ink that fits the
-    letter expected loosely (an O and a G's edge cut for a D); cut for
+    letter expected loosely (a D where an O is, beside a G); cut for
     the letter that fits that place next best, the row reads it cleanly,
     its other letters still in place. A TA reads that letter (the
     recognition benchmark's rows 2294, 2424 and 2431, each once credited
