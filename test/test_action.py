@@ -21,7 +21,7 @@ from turtlesim.msg import Pose
 from support.accuracy import LAB_N_VERTICES, expected, vertex_errors, worst_off
 from support.nodes import LogWatch, PoseRecorder, wait_for_connections, wait_until
 from turtle_letters.letters.font import BUILTIN
-from turtle_letters.msg import DrawAction, DrawGoal
+from turtle_letters.msg import DrawAction, DrawActionFeedback, DrawGoal
 from turtle_letters.letters.geometry import PlannedPose
 from turtle_letters.letters.sheet import Sheet
 
@@ -35,13 +35,27 @@ BAD_GOALS = {'empty': DrawGoal(text=''), 'both': DrawGoal(text='N', svg='/tmp/n.
 
 
 class Recorder:
-    """One goal's feedback, with the time each came."""
+    """The draw action's feedback as published (/draw/feedback), with the
+    time each came: a SimpleActionClient drops feedback that reaches it
+    after its goal's result, and the last one, sent just before the
+    result, on another topic, sometimes does."""
 
     def __init__(self):
         self.feedback = []
+        self.topic = rospy.Subscriber('/draw/feedback', DrawActionFeedback, self.heard)
+        wait_for_connections(self.topic, what="the action server's feedback")
 
-    def __call__(self, feedback):
-        self.feedback.append((time.time(), feedback))
+    def heard(self, message):
+        self.feedback.append((time.time(), message.feedback))
+
+    def close(self, timeout=5.0):
+        """Unsubscribed, once the feedback of a drawing's end came (or `timeout` s passed)."""
+        def ended():
+            return self.feedback and self.feedback[-1][1].progress >= 1.0
+        deadline = time.time() + timeout
+        while time.time() < deadline and not ended():
+            time.sleep(0.02)
+        self.topic.unregister()
 
 
 class DrawAsAnAction(unittest.TestCase):
@@ -82,7 +96,7 @@ class DrawAsAnAction(unittest.TestCase):
     @classmethod
     def draw_with_a_pause(cls):
         t0, record = time.time(), Recorder()
-        cls.client.send_goal(DrawGoal(text='N'), feedback_cb=record)
+        cls.client.send_goal(DrawGoal(text='N'))
         cls.wait_mid_move(t0)
         paused = cls.pause(True)
         paused_at = time.time()
@@ -94,6 +108,7 @@ class DrawAsAnAction(unittest.TestCase):
         resumed = cls.pause(False)
         resumed_at = time.time()
         assert cls.client.wait_for_result(rospy.Duration(150)), 'the paused N never ended'
+        record.close()
         return dict(t0=t0, ended_at=time.time(), feedback=record.feedback, paused=paused, resumed=resumed,
                     paused_at=paused_at, resumed_at=resumed_at, busy=busy,
                     status=cls.client.get_state(), result=cls.client.get_result())
