@@ -245,3 +245,19 @@ def test_only_a_stroke_run_on_a_third_of_itself_or_less_is_cut_back(letter, line
     assert (trimmed is not None) == cut_back, letter
     if cut_back:
         assert min(y for _, y in trimmed[0]) == pytest.approx(0.0, abs=0.02)
+
+
+def test_a_letter_the_ink_cut_back_gains_where_the_ink_as_drawn_reads_another_is_not_credited(
+        rows_afresh):
+    """A cadets' KB, squeezed to 0.55 of its width and tilted 30 degrees, as
+    the recognition benchmark draws it: its K's stem ends lower than the
+    rest of the row, along its own axis, and cut back as a stroke driven on
+    it leaves half a K, and the B beside it an H's place (the benchmark's
+    drawing 2168). As drawn, the row reads KB plainly: no H is credited."""
+    from support.glyph_rows import cadets
+    from test_ocr import as_the_benchmark_draws
+    ink = as_the_benchmark_draws(cadets('KB', aspect=0.55, gap=0.068), longest=2.74, tilt=30,
+                                 step=1.32 * 0.016)
+    assert letters(read_page(ink, [], 'KB')) == 'KB'
+    read = letters(read_page(ink, [], 'KH'))
+    assert read[1] != 'H', read
