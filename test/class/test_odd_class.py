@@ -12,7 +12,9 @@ course runs with bash, and one whose controller its launch file starts in
 a terminal this machine lacks (terminator), and one whose controller was
 written on Windows (its #! line ends in a carriage return), and one that
 asks at a prompt which letter to draw, as another course's lab does, and
-one whose CMakeLists.txt names an include folder git never kept.
+one whose CMakeLists.txt names an include folder git never kept, and
+one handed in without a CMakeLists.txt (its letter a shell script, as a
+real class's was: run unbuilt).
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -120,6 +122,8 @@ CONCLUSIONS = {
     'o14_included': ('L', 'pass', "include dir 'include' does not exist relative to 'lab1'; "
                                   "git keeps no empty folder: the grader made lab1/include/, "
                                   "empty, as a TA would, and it built"),
+    'o15_no_cmake': ('L', 'fail', 'The source directory hw3 does not contain a CMakeLists.txt '
+                                  'file.; the grader ran its scripts unbuilt, from their folder'),
 }
 
 
@@ -177,7 +181,9 @@ def graded(tmp_path_factory):
         os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
         with open(os.path.join(cls, 'o7_siblings', 'gazebo_world', name), 'w') as f:
             f.write(text)
-    for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS)):
+    no_cmake = {name: text for name, text in BY_HAND.items() if name != 'CMakeLists.txt'}
+    for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS),
+                          ('o15_no_cmake/hw3', no_cmake)):
         for name, text in files.items():
             path = os.path.join(cls, folder, name)
             os.makedirs(os.path.dirname(path), exist_ok=True)
@@ -185,7 +191,7 @@ def graded(tmp_path_factory):
                 f.write(text)
             os.chmod(path, 0o755 if name == 'scripts/asks.py' else 0o644)
     lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13',
-             'o14')  # not o2
+             'o14', 'o15')  # not o2
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +

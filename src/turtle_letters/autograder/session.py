@@ -21,7 +21,7 @@ from .failures import RLEXCEPTION, sources, talker_failure, why_not_launched, wh
 from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
-                         nodes, python_scripts, scripts, started_packages, unstartable_python,
+                         nodes, scripts, started_packages, unbuilt_scripts, unstartable_python,
                          wrap)
 from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
                     terminal_stand_ins)
@@ -257,14 +257,15 @@ def missing_include(work, output):
 
 def _unbuilt(box, limits, result):
     """A TA's fallback for a package whose build failed (its CMakeLists.txt
-    names another project, say) but whose nodes are Python scripts: they
-    are run from their folder, unbuilt, as a TA runs them by hand. Only
+    names another project, or it has none) but whose nodes are scripts
+    (Python, or shell scripts of rosservice and rostopic calls): they are
+    run from their folder, unbuilt, as a TA runs them by hand. Only
     `builds` is lost for the failure."""
-    if not python_scripts(os.path.join(box.work, 'ws', 'src', result.package.name)):
+    if not unbuilt_scripts(os.path.join(box.work, 'ws', 'src', result.package.name)):
         return result
     failed = result.build
     _launch_and_watch(box, limits, result, unbuilt=True)
-    result.build = failed._replace(says=f'{failed.says}; the grader ran its Python nodes '
+    result.build = failed._replace(says=f'{failed.says}; the grader ran its scripts '
                                         f'unbuilt, from their folder, as a TA would')
     return result
 

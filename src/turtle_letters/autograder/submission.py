@@ -303,13 +303,11 @@ def scripts(folder, depth=3):
     return sorted({entry.name for entry in _executable(files)})[:MAX_NODES]
 
 
-def python_scripts(folder, depth=3):
-    """The names of the executable scripts in a package's folders whose
-    first line names Python: what a TA can run without a build."""
+def unbuilt_scripts(folder, depth=3):
+    """The names of the executable scripts in a package's folders (_script:
+    a #!, a .sh, a .py): what a TA can run without a build."""
     files = _executable(_plain_files(folder, depth, lambda found: False))
-    firsts = {entry.name: (read_plain(entry.path, 100) or b'').split(b'\n')[0] for entry in files}
-    return sorted(name for name, first in firsts.items()
-                  if first.startswith(b'#!') and b'python' in first)[:MAX_NODES]
+    return sorted({entry.name for entry in files if _script(entry)})[:MAX_NODES]
 
 
 def _executable(entries):
