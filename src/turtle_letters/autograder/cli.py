@@ -279,6 +279,7 @@ def _force(place):
             for box in place.boxes:
                 box.__exit__(None, None, None)
             _reap_children()
+            sandbox.wait_reaped(set().union(*(box.users() for box in place.boxes)))
             os._exit(128 + number)
     return force
 

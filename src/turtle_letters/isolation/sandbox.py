@@ -220,6 +220,29 @@ def kill_user(user, pids=_all_pids):
         time.sleep(0.05)
 
 
+def wait_reaped(users, seconds=10.0):
+    """Waits until no process of `users` is ending or ended unreaped: ones
+    killed while a parent of theirs was dying went to init to reap, which
+    takes a second or more on some machines (a forced exit that leaves
+    at once left one so on CI)."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline and any(_ending(pid, users) for pid in _all_pids()):
+        time.sleep(0.05)
+
+
+def _ending(pid, users):
+    """Whether `pid` is of `users` and a zombie or ending (its command line is gone)."""
+    try:
+        if os.stat(f'/proc/{pid}').st_uid not in users:
+            return False
+        with open(f'/proc/{pid}/stat') as f:
+            state = f.read().rsplit(')', 1)[1].split()[0]
+        with open(f'/proc/{pid}/cmdline', 'rb') as f:
+            return state in 'ZX' or not f.read(1)
+    except (OSError, IndexError):
+        return False
+
+
 def _owned_by(pid, user):
     try:
         return os.stat(f'/proc/{pid}').st_uid == user
@@ -296,6 +319,10 @@ class Sandbox:
             _run(['ip', 'netns', 'delete', self.namespace], check=False)
             _run(['umount', '--lazy', self.scratch], check=False)
         remove_tree(self.scratch)
+
+    def users(self):
+        """Whom its processes run as: the submission's user and the one beside it."""
+        return {self.user, self.beside.user}
 
     def started(self, process):
         """`process`, which the grader started for it in a session of its
