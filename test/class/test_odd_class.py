@@ -14,7 +14,8 @@ written on Windows (its #! line ends in a carriage return), and one that
 asks at a prompt which letter to draw, as another course's lab does, and
 one whose CMakeLists.txt names an include folder git never kept, and
 one handed in without a CMakeLists.txt (its letter a shell script, as a
-real class's was: run unbuilt).
+real class's was: run unbuilt), and one whose script stops at its first
+`rostopic pub -l` (latch, where -1 was meant), as a real class's did.
 Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
@@ -71,6 +72,12 @@ BY_HAND = {'package.xml': '<package format="2"><name>hw3</name><version>0.0.1</v
                                  "'[0.0, 0.0, 0.0]' '[0.0, 0.0, 1.5708]'\n"
                                  "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
                                  "'[2.0, 0.0, 0.0]' '[0.0, 0.0, 0.0]'\n"}
+# The same, each move a `rostopic pub -l` (latch, typed for -1), its first a
+# turn, as a real class's script was: that first one waits to be stopped.
+LATCHED = dict(BY_HAND, **{'scripts/letters.sh': BY_HAND['scripts/letters.sh'].replace(
+    "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- '[3.0, 0.0, 0.0]'",
+    "rostopic pub -l /turtle1/cmd_vel geometry_msgs/Twist -- '[0.0, 0.0, 0.0]' '[0.0, 0.0, 1.0]'"
+    "\nrostopic pub -l /turtle1/cmd_vel geometry_msgs/Twist -- '[3.0, 0.0, 0.0]'")})
 # Another course's lab: no talker, the script asks which letter to draw,
 # as a real class's did ("enter a letter (A,B)"), and draws an L if told L.
 ASKS = {'package.xml': BY_HAND['package.xml'].replace('hw3', 'asks'),
@@ -122,6 +129,7 @@ CONCLUSIONS = {
     'o14_included': ('L', 'pass', "include dir 'include' does not exist relative to 'lab1'; "
                                   "git keeps no empty folder: the grader made lab1/include/, "
                                   "empty, as a TA would, and it built"),
+    'o16_latched': ('', 'fail', 'launch/turtle.launch starts nodes of turtlesim only'),
     'o15_no_cmake': ('L', 'fail', 'The source directory hw3 does not contain a CMakeLists.txt '
                                   'file.; the grader ran its scripts unbuilt, from their folder'),
 }
@@ -183,7 +191,7 @@ def graded(tmp_path_factory):
             f.write(text)
     no_cmake = {name: text for name, text in BY_HAND.items() if name != 'CMakeLists.txt'}
     for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS),
-                          ('o15_no_cmake/hw3', no_cmake)):
+                          ('o15_no_cmake/hw3', no_cmake), ('o16_latched/hw3', LATCHED)):
         for name, text in files.items():
             path = os.path.join(cls, folder, name)
             os.makedirs(os.path.dirname(path), exist_ok=True)
@@ -191,7 +199,7 @@ def graded(tmp_path_factory):
                 f.write(text)
             os.chmod(path, 0o755 if name == 'scripts/asks.py' else 0o644)
     lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13',
-             'o14', 'o15')  # not o2
+             'o14', 'o15', 'o16')  # not o2
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +
@@ -228,6 +236,18 @@ def test_a_script_that_ends_with_its_last_move_is_seen_to_stand(graded):
         tests = {t['name']: t for t in json.load(f)['tests']}
     ends = tests['The drawing ends, the turtle standing still']
     assert ends['status'] == 'passed' and ends['output'].startswith('ended after'), ends
+
+
+def test_a_script_stopped_at_a_latched_rostopic_pub_says_where_and_what_to_type(graded):
+    """o16's script turns with `rostopic pub -l`, which never exits: the
+    letter's line and the ending's say so, not only that nothing was drawn."""
+    with open(os.path.join(graded[0], 'o16_latched', 'results.json')) as f:
+        said = {t['name']: t['output'] for t in json.load(f)['tests']}
+    why = ('scripts/letters.sh line 4: rostopic pub without -1 publishes once and waits to be '
+           'stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits')
+    assert said['The letter drawn is the expected one'] == f'nothing was drawn: {why}', said
+    assert said['The drawing ends, the turtle standing still'] == \
+        f'the turtle never moved after the trigger: {why}', said
 
 
 def test_a_prompt_that_asks_for_the_letter_is_typed_it_and_the_row_says_so(graded):

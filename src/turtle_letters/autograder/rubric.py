@@ -301,7 +301,8 @@ def _letter_read(facts, _):
     if not read:
         teleported = facts.drawing.jump_ink if facts.drawing else 0
         return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '
-                     f'laid all there is' if teleported else 'nothing was drawn')
+                     f'laid all there is' if teleported else 'nothing was drawn' +
+                (f': {facts.stuck}' if facts.stuck else ''))
     if len(read) == 1 and read[0].letter is None:
         return 0.0, (f'no letter reads from the path (closest: {read[0].best.letter}, '
                      f'{100 * read[0].best.fit:.0f}% of its height off)')

@@ -22,6 +22,7 @@ from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
                          nodes, scripts, started_packages, unbuilt_scripts, unstartable_python,
+                         waiting_publishers,
                          wrap)
 from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
                     terminal_stand_ins)
@@ -569,7 +570,17 @@ def _explain(result, terminal, work):
         graph = seen.last_graph(result.events)
         result.stuck = why_still(terminal.text(result.still_from), work,
                                  graph['chatter_subscribers'] if graph else [],
-                                 graph.get('offered') if graph else None, result.events)
+                                 graph.get('offered') if graph else None, result.events,
+                                 waiting_publishers(*_started_scripts(result, work)))
+
+
+def _started_scripts(result, work):
+    """(the package's copy, the names of the executables its run started)."""
+    copied = os.path.join(work, 'ws', 'src', result.package.name)
+    if result.executables or not result.package.launch:
+        return copied, result.executables
+    return copied, [kind for _, kind in nodes(os.path.join(copied, result.package.launch),
+                                              {result.package.name: copied})]
 
 
 def _stood(record, since, settle, scripts):

@@ -427,6 +427,51 @@ def bare_shell(folder, depth=3):
                   if entry.name.endswith('.sh') and not _starts_with_shebang(entry.path))
 
 
+def waiting_publishers(folder, names, depth=3):
+    """Where the shell scripts of `names` in a package's folders run a `rostopic pub`
+    that never exits, in words ('scripts/draw.sh line 1'), the first of
+    each: without -1 (once), -r (a rate) or -f (a file), rostopic pub
+    publishes once, latched, and waits to be stopped, so a script's lines
+    after it never run (`-l`, latch, is easily typed for `-1`)."""
+    found = []
+    for entry in _plain_files(folder, depth, lambda found: False):
+        if entry.name not in names or not _shell_script(entry.path):
+            continue
+        text = (read_plain(entry.path, MAX_BYTES) or b'').decode('utf-8', 'replace')
+        for number, line in enumerate(text.splitlines(), 1):
+            if _waits(line):
+                found.append(f'{os.path.relpath(entry.path, folder)} line {number}')
+                break
+    return found
+
+
+def _shell_script(path):
+    """Whether a plain file is a shell script: .sh, or a #! naming sh or bash."""
+    first = (read_plain(path, 200) or b'').split(b'\n')[0]
+    return path.endswith('.sh') or (first.startswith(b'#!') and
+                                    re.search(rb'\b(ba|da)?sh\s*$', first.strip()) is not None)
+
+
+def _waits(line):
+    """Whether a shell line runs `rostopic pub` in the foreground without
+    -1, -r or -f (nor under `timeout`): it then waits to be stopped."""
+    words = line.split('#', 1)[0].split()
+    if 'rostopic' not in words or words[-1].endswith('&') or 'timeout' in words:
+        return False
+    at = words.index('rostopic')
+    if words[at + 1:at + 2] != ['pub']:
+        return False
+    options = []
+    for word in words[at + 2:]:
+        if word == '--':
+            break
+        options.append(word)
+    return not any(word in ('--once', '--file') or word.startswith(('--rate', '--file=')) or
+                   (word.startswith('-') and not word.startswith('--') and
+                    set(word[1:]) & set('1rf'))
+                   for word in options)
+
+
 def unstartable_python(folder, depth=3):
     """The names of the executable .py files in a package's folders that
     exec cannot start as handed in: no #! line, or one that names no program

@@ -213,3 +213,10 @@ def test_a_node_that_imports_ros_2_is_told_what_to_do(tmp_path):
     assert talker_failure(ros2, str(tmp_path)) == (
         "writer died: ModuleNotFoundError: No module named 'rclpy'; that is ROS 2, and this lab "
         'is ROS 1 (Noetic): write it with rospy')
+
+
+def test_a_script_stopped_at_a_rostopic_pub_that_waits_says_where_and_what_to_type(tmp_path):
+    said = why_still('', str(tmp_path), [], {'/writer': ['/turtle_write']}, [],
+                     ['scripts/draw.sh line 1'])
+    assert said == ('scripts/draw.sh line 1: rostopic pub without -1 publishes once and waits to '
+                    'be stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits')

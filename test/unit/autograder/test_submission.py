@@ -287,3 +287,30 @@ def test_a_rospy_script_handed_in_without_its_line_or_mode_is_run_with_python3(t
     assert submission.made_executable(folder) == ['scripts/draw.py']
     assert submission.unstartable_python(folder) == ['draw.py']
     assert submission.scripts(folder) == ['draw.py']
+
+
+def test_a_rostopic_pub_that_waits_is_found_in_the_scripts_started(tmp_path):
+    """waiting_publishers: a shell script's first `rostopic pub` with no -1,
+    -r or -f (a latched -l typed for -1) waits to be stopped; a backgrounded
+    one, one under timeout, a script not started, a Python file, do not count."""
+    scripts = {
+        'scripts/draw.sh': "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "
+                           "'[1.0, 0, 0]' '[0, 0, 0]'\n"
+                           "# rostopic pub /turtle1/cmd_vel geometry_msgs/Twist\n"
+                           "rostopic pub -l /turtle1/cmd_vel geometry_msgs/Twist -- "
+                           "'[-1.0, 0, 0]' '[0, 0, 0]'\n"
+                           "rostopic pub /turtle1/cmd_vel geometry_msgs/Twist -- '[1, 0, 0]'\n",
+        'scripts/loop': "#!/bin/bash\nrostopic pub -r 1 /turtle1/cmd_vel geometry_msgs/Twist\n"
+                        "rostopic pub --once /chatter std_msgs/String P\n"
+                        "rostopic pub /turtle1/cmd_vel geometry_msgs/Twist &\n"
+                        "timeout 2 rostopic pub /turtle1/cmd_vel geometry_msgs/Twist\n",
+        'scripts/plain': "#!/bin/sh\nrostopic pub -f moves.yaml /turtle1/cmd_vel\n"
+                         "rostopic pub -s /chatter std_msgs/String 'data: P'\n",
+        'scripts/draw.py': "#!/usr/bin/env python3\n# rostopic pub /chatter std_msgs/String\n",
+        'old/unused.sh': "rostopic pub /turtle1/cmd_vel geometry_msgs/Twist\n",
+    }
+    for path, text in scripts.items():
+        (tmp_path / path).parent.mkdir(exist_ok=True)
+        (tmp_path / path).write_text(text)
+    assert submission.waiting_publishers(str(tmp_path), ['draw.sh', 'loop', 'plain', 'draw.py']) \
+        == ['scripts/draw.sh line 3', 'scripts/plain line 3']
