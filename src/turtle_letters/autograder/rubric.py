@@ -438,4 +438,17 @@ def grade(facts: Facts, rubric: Rubric) -> Grade:
     lost = next((t for t in tests if not t.met), None)
     reason = f'{lost.name}: {lost.output}' if lost else 'every criterion met'
     passed = score >= rubric.pass_score and not missed and not facts.limit
-    return Grade(tests, score, total, 'pass' if passed else 'fail', reason)
+    return Grade(tests, score, total, 'pass' if passed else 'fail',
+                 reason + _failed_on(missed, lost))
+
+
+def _failed_on(missed, lost):
+    """Words for the required criterion a fail missed, where another lost
+    points first and it says more than that nothing came of it ('' if
+    not): a row that begins with a lost launch file still says why no
+    letter was credited."""
+    if not missed or missed[0] is lost or missed[0].output == 'nothing was drawn' or \
+            missed[0].output.startswith(('not tried', 'not scored')):
+        return ''
+    return f'; failed on {missed[0].name}: {missed[0].output}'
+

@@ -111,6 +111,20 @@ def test_a_failed_build_reaches_nothing_else():
     assert scores_of(graded)['It launches'] == (0, 'not tried: the build failed')
 
 
+def test_a_fail_says_what_failed_it_after_what_cost_points_first():
+    """The row's reason begins with the first criterion that lost points;
+    where a required one failed it, that follows, unless it only echoes
+    that nothing came of the run."""
+    wrong = grade(facts(expected='K', launch=Step(False, 'no launch file')), load(DEFAULT))
+    assert wrong.reason == ('It launches: no launch file; failed on The letter drawn is the '
+                            'expected one: drew L, expected K')
+    unbuilt = grade(Facts('L', '', Step(False, 'catkin_make failed: x'), None, None, None, None,
+                          []), load(DEFAULT))
+    assert unbuilt.reason == 'It builds: catkin_make failed: x'
+    alone = grade(facts(expected='K'), load(DEFAULT))
+    assert alone.reason == 'The letter drawn is the expected one: drew L, expected K'
+
+
 def test_the_wrong_letter_earns_no_accuracy():
     graded = grade(facts(expected='K'), load(DEFAULT))
     lines = scores_of(graded)
