@@ -215,7 +215,7 @@ def talker_failure(output, work):
     return first_death(output, work) or last_error(output, node_logs(work))
 
 
-def why_still(output, work, listeners, offered=None, events=(), waiting=()):
+def why_still(output, work, listeners, offered=None, events=(), waiting=''):
     """Why the turtle never moved after the trigger: a node that died after
     it, else commands published where no turtle hears them (`events`: the
     watcher's), else the last error line of the nodes that listen on
@@ -224,10 +224,7 @@ def why_still(output, work, listeners, offered=None, events=(), waiting=()):
     offer (`offered`: {node: [service]}): a package that draws only when
     its own service is called."""
     found = first_death(output, work) or unheard_said(events) or last_error(
-        output, *[node_logs(work, name.rsplit('/', 1)[-1]) for name in listeners]) or \
-        '; '.join(f'{where}: rostopic pub without -1 publishes once and waits to be stopped '
-                  f'(Ctrl-C), so no line after it ran; -1 publishes once and exits'
-                  for where in waiting)
+        output, *[node_logs(work, name.rsplit('/', 1)[-1]) for name in listeners]) or waiting
     if found or not offered:
         return found
     return waits_for_calls(dict(offered=offered))

@@ -79,6 +79,7 @@ class Facts(NamedTuple):
     limit_s: Optional[float] = None     # s the drawing was watched for at most (session.Run)
     writing: Optional[list] = None  # the ink the letters were read in, if not all the canvas's
     where: str = ''                 # ... which of the canvas's writing that is, in words
+    waiting: str = ''               # where a script stops at a rostopic pub that never exits
 
     @classmethod
     def never_ran(cls, expected, problem):
@@ -93,7 +94,8 @@ class Facts(NamedTuple):
         return cls.of_drawing(expected, drawing, page, ocr)._replace(
             build=run.build, launch=run.launch, waited=run.waited, talker=run.talker,
             stuck=run.stuck, limit=run.limit, own_triggers=own_triggers(run.events),
-            chatter_peak=chatter_peak(run.events), broken=run.broken, limit_s=run.limit_s)
+            chatter_peak=chatter_peak(run.events), broken=run.broken, limit_s=run.limit_s,
+            waiting=run.waiting)
 
     @classmethod
     def of_drawing(cls, expected, drawing, page, ocr):
@@ -302,10 +304,10 @@ def _letter_read(facts, _):
         teleported = facts.drawing.jump_ink if facts.drawing else 0
         return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '
                      f'laid all there is' if teleported else 'nothing was drawn' +
-                (f': {facts.stuck}' if facts.stuck else ''))
+                (f': {facts.stuck or facts.waiting}' if facts.stuck or facts.waiting else ''))
     if len(read) == 1 and read[0].letter is None:
         return 0.0, (f'no letter reads from the path (closest: {read[0].best.letter}, '
-                     f'{100 * read[0].best.fit:.0f}% of its height off)')
+                     f'{100 * read[0].best.fit:.0f}% of its height off)') + _cut_short(facts)
     text = drawn(read)
     if not facts.expected:
         return 0.0, (f'drew {text}, but no letter is expected: give it in the roster (its '
@@ -313,10 +315,17 @@ def _letter_read(facts, _):
     right = len(_right(facts))
     if text == facts.expected:
         return 1.0, f'drew {text}, as expected'
-    wrong, small_l = f'drew {text}, expected {facts.expected}', _small_l(text, facts.expected)
+    wrong = f'drew {text}, expected {facts.expected}'
+    small_l = _small_l(text, facts.expected) + _cut_short(facts)
     if len(facts.expected) == 1:
         return 0.0, wrong + small_l
     return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place{small_l}'
+
+
+def _cut_short(facts):
+    """'; where a script stopped at a rostopic pub that never exits' (a
+    letter drawn in part), or ''."""
+    return f'; {facts.waiting}' if facts.waiting else ''
 
 
 def _small_l(text, expected):

@@ -70,6 +70,7 @@ class Run:
         self.finished = None    # t the run stopped watching
         self.limit_s = None     # s the drawing was watched for at most (limits.drawing)
         self.script_until = None    # t a shell script it started was last seen running
+        self.waiting = ''       # where a script it started stops at a rostopic pub, in words
 
     def watched_for(self):
         """s the drawing was watched for, from the trigger (or the launch) on."""
@@ -566,12 +567,13 @@ def _explain(result, terminal, work):
         why = talker_failure(text, work)
         if why:
             result.talker = result.talker._replace(says=f'{result.talker.says}: {why}')
+    result.waiting = waiting_publishers(*_started_scripts(result, work))
     if result.still_from is not None:
         graph = seen.last_graph(result.events)
         result.stuck = why_still(terminal.text(result.still_from), work,
                                  graph['chatter_subscribers'] if graph else [],
                                  graph.get('offered') if graph else None, result.events,
-                                 waiting_publishers(*_started_scripts(result, work)))
+                                 result.waiting)
 
 
 def _started_scripts(result, work):

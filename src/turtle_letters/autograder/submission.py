@@ -429,8 +429,8 @@ def bare_shell(folder, depth=3):
 
 def waiting_publishers(folder, names, depth=3):
     """Where the shell scripts of `names` in a package's folders run a `rostopic pub`
-    that never exits, in words ('scripts/draw.sh line 1'), the first of
-    each: without -1 (once), -r (a rate) or -f (a file), rostopic pub
+    that never exits, in words ('scripts/draw.sh line 1: ...'; '' if none),
+    the first of each: without -1 (once), -r (a rate) or -f (a file), rostopic pub
     publishes once, latched, and waits to be stopped, so a script's lines
     after it never run (`-l`, latch, is easily typed for `-1`)."""
     found = []
@@ -440,9 +440,11 @@ def waiting_publishers(folder, names, depth=3):
         text = (read_plain(entry.path, MAX_BYTES) or b'').decode('utf-8', 'replace')
         for number, line in enumerate(text.splitlines(), 1):
             if _waits(line):
-                found.append(f'{os.path.relpath(entry.path, folder)} line {number}')
+                found.append(f'{os.path.relpath(entry.path, folder)} line {number}: rostopic '
+                             f'pub without -1 publishes once and waits to be stopped (Ctrl-C), '
+                             f'so no line after it ran; -1 publishes once and exits')
                 break
-    return found
+    return '; '.join(found)
 
 
 def _shell_script(path):

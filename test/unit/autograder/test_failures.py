@@ -216,7 +216,7 @@ def test_a_node_that_imports_ros_2_is_told_what_to_do(tmp_path):
 
 
 def test_a_script_stopped_at_a_rostopic_pub_that_waits_says_where_and_what_to_type(tmp_path):
-    said = why_still('', str(tmp_path), [], {'/writer': ['/turtle_write']}, [],
-                     ['scripts/draw.sh line 1'])
-    assert said == ('scripts/draw.sh line 1: rostopic pub without -1 publishes once and waits to '
-                    'be stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits')
+    waiting = ('scripts/draw.sh line 1: rostopic pub without -1 publishes once and waits to '
+               'be stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits')
+    assert why_still('', str(tmp_path), [], {'/writer': ['/turtle_write']}, [], waiting) == \
+        waiting

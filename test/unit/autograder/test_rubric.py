@@ -125,6 +125,15 @@ def test_a_fail_says_what_failed_it_after_what_cost_points_first():
     assert alone.reason == 'The letter drawn is the expected one: drew L, expected K'
 
 
+def test_a_letter_cut_short_by_a_script_stopped_at_a_rostopic_pub_says_where():
+    stopped = 'scripts/l.sh line 9: rostopic pub without -1 publishes once and waits'
+    graded = grade(facts(expected='K')._replace(waiting=stopped), load(DEFAULT))
+    assert scores_of(graded)['The letter drawn is the expected one'] == (
+        0, f'drew L, expected K; {stopped}')
+    right = grade(facts()._replace(waiting=stopped), load(DEFAULT))      # drawn before it stopped
+    assert scores_of(right)['The letter drawn is the expected one'] == (25, 'drew L, as expected')
+
+
 def test_the_wrong_letter_earns_no_accuracy():
     graded = grade(facts(expected='K'), load(DEFAULT))
     lines = scores_of(graded)

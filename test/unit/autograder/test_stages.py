@@ -41,7 +41,8 @@ def run_of(name, executables=(), drivers=()):
     graph = dict(kind='graph', t=1.0, cmd_vel_publishers=list(drivers))
     by = [dict(k='by', t=1.0, node=node) for node in drivers]
     return SimpleNamespace(name=name, build=OK, launch=Step(False, f'{name} launched'),
-                           waited=OK, talker=OK, stuck='', limit='', broken='', events=[graph],
+                           waited=OK, talker=OK, stuck='', waiting='', limit='', broken='',
+                           events=[graph],
                            record=[dict(k='spawn', t=0.0, turtle='turtle1')] + by,
                            executables=list(executables), cpu_pct=None, limit_s=None,
                            script_until=None, watched_for=lambda: 0.0, log=[(f'roslaunch ({name})', f'{name} ran')])

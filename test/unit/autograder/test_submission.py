@@ -313,4 +313,7 @@ def test_a_rostopic_pub_that_waits_is_found_in_the_scripts_started(tmp_path):
         (tmp_path / path).parent.mkdir(exist_ok=True)
         (tmp_path / path).write_text(text)
     assert submission.waiting_publishers(str(tmp_path), ['draw.sh', 'loop', 'plain', 'draw.py']) \
-        == ['scripts/draw.sh line 3', 'scripts/plain line 3']
+        == ('scripts/draw.sh line 3: rostopic pub without -1 publishes once and waits to be '
+            'stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits; '
+            'scripts/plain line 3: rostopic pub without -1 publishes once and waits to be '
+            'stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits')
