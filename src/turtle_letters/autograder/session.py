@@ -22,8 +22,7 @@ from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
                          nodes, scripts, started_packages, unbuilt_scripts, unstartable_python,
-                         waiting_publishers,
-                         wrap)
+                         waiting_publishers, wrap)
 from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
                     terminal_stand_ins)
 
