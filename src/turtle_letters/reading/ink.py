@@ -11,6 +11,10 @@ WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a d
 THIN = 0.2          # half the width, share of the height, of an outline's band at most
 AS_BOX = 0.97       # share of its box a closed line fills: a box (a D with cut corners 0.91)
 CLOSED = 0.03       # share of the height within which a line's ends meet: a contour
+# A loop this share of its length from either end narrower than TAPERED of its middle's
+# width narrows to its ends: an O drawn narrow, no letter's edge (a rowmans O 0.39 as
+# wide as high banded like an outline, and its middle line read as an I within 4%).
+TAPER_AT, TAPERED = 0.1, 0.7
 MAX_POINTS = 600    # points of ink read at most: the cost of a reading is bounded
 LONGEST = 50        # heights of ink a letter is drawn with, at most: more is a flood (flooded)
 STRAIGHT = 0.03     # share of its length within which ink lies along one line: a bare stroke
@@ -235,11 +239,13 @@ def outline(ink):
     lines, filled even-odd, make a band nowhere thicker than THIN of the
     height (nor thinner than a fifth of it), and are most of its ink. The
     band's middle line, as points (lines of one point each); else None.
-    (A loop drawn as a letter, an O or a D, fills a wide shape: no outline.)"""
+    (A loop drawn as a letter, an O or a D, fills a wide shape, or narrows
+    to its ends (tapered): no outline.)"""
     points = [p for line in ink for p in line]
     x, y, w, h = box(points)
     contours = [line for line in ink if closed(line, h)]
-    if not contours or h <= 0 or w > WIDEST * h:
+    if not contours or h <= 0 or w > WIDEST * h or \
+            (len(contours) == 1 and tapered(contours[0])):
         return None
     if length(contours) < length(ink) / 2:
         return None
@@ -260,6 +266,28 @@ def outline(ink):
     ridge &= depth >= numpy.median(depth[ridge]) / 2      # the spurs to its corners cut short
     rows, cols = numpy.nonzero(ridge)
     return [[(x + (c - 1) * CELL * h, y + (r - 1) * CELL * h)] for r, c in zip(rows, cols)]
+
+
+def tapered(line):
+    """Whether the closed `line`, stood up (turned back by its squarest turn,
+    its longer side upright), is at TAPER_AT of its length from either end
+    less than TAPERED as wide as at its middle: an ellipse is 0.6 as wide
+    there; a block I's edge as wide (a stadium's, 0.87), a serif I's wider."""
+    points = numpy.array(turned([line], -squarest_turn([line]), (0.0, 0.0))[0] + line[:1],
+                         dtype=float)
+    if numpy.ptp(points[:, 0]) > numpy.ptp(points[:, 1]):
+        points = points[:, ::-1]
+    a, b = points[:-1], points[1:]
+
+    def width(y):
+        crossed = (a[:, 1] > y) != (b[:, 1] > y)
+        xs = a[crossed, 0] + (y - a[crossed, 1]) * (b[crossed, 0] - a[crossed, 0]) / \
+            (b[crossed, 1] - a[crossed, 1])
+        return float(numpy.ptp(xs)) if len(xs) > 1 else 0.0
+    low, length = points[:, 1].min(), numpy.ptp(points[:, 1])
+    middle = width(low + length / 2)
+    return middle > 0 and all(width(low + length * at) < TAPERED * middle
+                              for at in (TAPER_AT, 1 - TAPER_AT))
 
 
 def boxed(ink):

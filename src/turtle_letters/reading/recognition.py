@@ -54,6 +54,8 @@ TWIN_TURN = 15
 TWIN_LEVEL = 5
 # A box this wide for its height is a block I's edge and a square O alike: no letter.
 # (A DejaVu Sans Bold I stretched to 0.48 was credited as the O it was graded against.)
+# Nor is its middle line an I where other ink runs off it: a cadet's square Q, kept
+# whole in a row, read as the I it was graded against, within 1.4% of its height.
 DOUBTFUL_BOX = (0.3, 0.5)
 # A letter read past CLEAN whose mirror image fits it within MIRRORED times as far off
 # is that letter drawn backwards: a turtle's R with its bowl left of its stem fit a
@@ -310,7 +312,8 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     better than theirs (_fits): read it alone for its own (rows.Row.reading
     does, for the letter expected). With `refined` 1, letters that cannot
     fit best are left out: a row's cuts ask only how well a part fits. A
-    box DOUBTFUL_BOX wide for its height (ink.boxed) reads as no letter, and
+    box DOUBTFUL_BOX wide for its height (ink.boxed) reads as no letter, nor
+    as an I with other ink beside it, and
     a bare stroke (ink.straight) as an I or none: a line sloped 27 degrees
     fit a J tilted 52 within 8% of its height, its hook no more than that.
     Nor is a letter drawn backwards read (_backwards)."""
@@ -318,12 +321,17 @@ def read(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,
     if len(points) < 2 or box(points)[3] <= 0:
         return Reading(None, None, {})
     reading = _read_either(ink, letters, tilts, finer, refined)
-    doubtful = reading.letter is not None and \
-        DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1]
+    loops = [line for line in ink if closed(line, box(points)[3])]
+    doubtful = reading.letter is not None and _doubtful(ink) or \
+        reading.letter == 'I' and 0 < len(loops) < len(ink) and _doubtful(loops)
     if reading.letter not in (None, 'I') and straight(ink) or doubtful or \
             _backwards(ink, reading, tilts, finer):
         return Reading(None, reading.best, reading.fits)
     return reading
+
+
+def _doubtful(ink):
+    return DOUBTFUL_BOX[0] <= (boxed(ink) or 0) <= DOUBTFUL_BOX[1]
 
 
 def best_fit(ink, letters=string.ascii_uppercase, tilts=TILTS, finer=FINER,

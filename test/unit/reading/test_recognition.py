@@ -949,3 +949,27 @@ def test_a_side_two_letters_share_is_each_ones_with_a_cut_a_nub_off_it(off):
     side = max(x for x, _ in ink[0])
     (_, o_shared), (_, u_shared) = row.letters([side + off * row.height])
     assert read(o_shared).letter == 'O' and read(u_shared).letter == 'U'
+
+
+@pytest.mark.parametrize('tilt', [0, 30])
+def test_a_narrow_o_drawn_as_one_loop_is_no_outline_and_no_i(tilt):
+    """A loop 0.39 as wide as high, narrowing to its ends, bands like an
+    outline but is an O drawn narrow: its middle line, a bare stroke, is
+    no I (a rowmans O so squeezed was credited as the I it was graded
+    against). A block I's edge, as wide at its ends, is still read so."""
+    ring = turned([[(3 + 0.39 * math.cos(i / 40 * math.tau), 3 + math.sin(i / 40 * math.tau))
+                    for i in range(41)]], tilt, (3, 3))
+    assert outline(ring) is None and read(ring).letter != 'I'
+    block = turned([[(3, 2), (3.35, 2), (3.35, 4), (3, 4), (3, 2)]], tilt, (3, 3))
+    assert read(block).letter == 'I'
+
+
+
+@pytest.mark.parametrize('aspect', [0.8, 1.0])
+def test_a_square_q_is_no_i_for_its_middle_line(aspect):
+    """A cadet's square Q squeezed so that its square is 0.4 as wide as
+    high bands like a block I's edge: with its tail running off it, its
+    middle line is no I (read in a row, it earned the I it was graded
+    against)."""
+    q = cadets('Q', aspect * 0.66)
+    assert read(q).letter != 'I'
