@@ -11,7 +11,7 @@ WIDEST = 12.0       # width-to-height of ink past which no letter is fitted (a d
 THIN = 0.2          # half the width, share of the height, of an outline's band at most
 AS_BOX = 0.97       # share of its box a closed line fills: a box (a D with cut corners 0.91)
 CLOSED = 0.03       # share of the height within which a line's ends meet: a contour
-# A loop this share of its length from either end narrower than TAPERED of its middle's
+# A loop this share of its height from top and bottom narrower than TAPERED of its middle's
 # width narrows to its ends: an O drawn narrow, no letter's edge (a rowmans O 0.39 as
 # wide as high banded like an outline, and its middle line read as an I within 4%).
 TAPER_AT, TAPERED = 0.1, 0.7
