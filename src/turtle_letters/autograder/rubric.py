@@ -229,9 +229,8 @@ def drawn(readings):
 def by_ocr(facts):
     """Whether the letters are credited on OCR's reading: it reads the
     expected text confidently where the strokes read something else, and
-    the strokes read no other letter cleanly that the expected one does not
-    fit cleanly too (ocr.supports; the strokes'
-    reading alone never credits a letter it did not read)."""
+    the strokes read no other letter in the place of one (ocr.supports; the
+    strokes' reading alone never credits a letter it did not read)."""
     return drawn(facts.readings) != facts.expected and facts.ocr is not None and \
         supports(facts.ocr, facts.expected, facts.readings)
 
