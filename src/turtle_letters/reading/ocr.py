@@ -21,8 +21,8 @@ from typing import NamedTuple
 
 from .ink import box, closed, dash, flooded, squarest_turn, thinned, turned
 from .forms import CLEAN
-from .recognition import (AMBIGUOUS, TWIN_TURN, TWINS, Reading, Unfinished, bounded,
-                          plainly_other, twin_farther)
+from .recognition import (AMBIGUOUS, TWINS, Reading, Unfinished, bounded, plainly_other,
+                          quarter_apart, twin_farther)
 from .rows import letters_of, levels, read_blind, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
@@ -342,8 +342,7 @@ def _twin_fits(reading, expected):
     turned back 45 degrees, OCR read a Z 90% sure.)"""
     own, twin = reading.fits.get(expected), reading.fits.get(TWINS.get(expected))
     if reading.letter != expected and own is not None and twin is not None and \
-            twin.fit <= min(CLEAN, own.fit + AMBIGUOUS) and \
-            abs(abs(own.tilt - twin.tilt) - 90) <= TWIN_TURN:
+            twin.fit <= min(CLEAN, own.fit + AMBIGUOUS) and quarter_apart(own, twin):
         return True
     best = reading.best
     if best is None or best.letter != TWINS.get(expected) or best.fit > best.readable:

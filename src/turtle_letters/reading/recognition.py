@@ -434,9 +434,13 @@ def upright_twin(best, fits):
 def twin_farther(fit, other):
     """Whether `fit` is the twin (TWINS) of `other`, about a quarter-turn
     from it and standing TWIN_LEVEL farther from level."""
-    return fit.letter == TWINS.get(other.letter) and \
-        abs(abs(fit.tilt - other.tilt) - 90) <= TWIN_TURN and \
+    return fit.letter == TWINS.get(other.letter) and quarter_apart(fit, other) and \
         abs(fit.tilt) >= abs(other.tilt) + TWIN_LEVEL
+
+
+def quarter_apart(fit, other):
+    """Whether two Fits lie about a quarter-turn apart (within TWIN_TURN of 90 degrees)."""
+    return abs(abs(fit.tilt - other.tilt) - 90) <= TWIN_TURN
 
 
 def _readable(found):
