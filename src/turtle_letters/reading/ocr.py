@@ -9,7 +9,8 @@ unless it reads confidently as another text as it lies, turned back by
 each of TILTS and by the turn that stands it squarest, then narrowed (a
 letter drawn twice as wide is no print letter to Tesseract); a reading
 of the expected text at CONFIDENT or more (CONFIDENT_TURNED turned or
-narrowed) is kept; else the expected text where its readings vote for it
+narrowed) is kept, with any reading of another view that leaves it in doubt
+(_rival); else the expected text where its readings vote for it
 (_voted); else the reading level. (Turned, a J read as an S at 86%: what
 reads as something else level is not turned until it reads as hoped.)
 """
@@ -21,8 +22,8 @@ from typing import NamedTuple
 
 from .ink import box, closed, dash, flooded, squarest_turn, thinned, turned
 from .forms import CLEAN
-from .recognition import (AMBIGUOUS, TWINS, Reading, Unfinished, bounded, plainly_other,
-                          quarter_apart, twin_farther)
+from .recognition import (AMBIGUOUS, TWIN_LEVEL, TWINS, Reading, Unfinished, bounded,
+                          plainly_other, quarter_apart, twin_farther)
 from .rows import letters_of, levels, read_blind, without_specks
 
 GLYPH_PX = 64           # the row's height in the picture (Tesseract reads 20 to 100 px best)
@@ -34,6 +35,7 @@ NEAR = 2.5          # degrees off within which a turn is as good as another
 NARROWER = (0.7, 0.5)   # shares of its width the ink is read at last: a letter drawn wide
 MAX_WIDTH_PX = 2000     # a wider picture (a flood of ink) is read narrowed to this
 SURE = 95           # Tesseract's confidence in a reading's least sure letter, for a vote (_voted)
+AS_SURE = 5         # confidence points below a turned Q within which another reading doubts it
 _apis = threading.local()       # Tesseract's handles are not shared between threads
 # Tesseract's OpenMP would take every core while it reads: the grader reads
 # one student's ink while another's timed controller draws on the other core.
@@ -47,6 +49,7 @@ class OcrReading(NamedTuple):
     width: float = 1.0      # share of its width the ink was read at
     objection: str = ''     # the strokes' plainly other letter, read blind ('D in place of L')
     votes: tuple = ()       # ((text, readings of it), ...): where the readings voted (_voted)
+    rival: object = None    # an OcrReading of the ink that leaves this one in doubt (_rival)
 
 
 def picture(ink, filled=False):
@@ -163,26 +166,68 @@ def _read_text(ink, expected):
         if supports(alone, expected):
             return _objected(ink, alone)
     x, y, w, h = box(points)
-    drawn, ink = ink, thinned(ink, h / 200)
-    level, votes, surest = None, collections.Counter(), OcrReading('', 0.0)
-    for tilt, width in _views(ink):
-        upright = turned(ink, -tilt, (x + w / 2, y + h / 2)) if tilt else ink
-        if width != 1.0:
-            upright = [[(px * width, py) for px, py in line] for line in upright]
+    drawn, ink, centre = ink, thinned(ink, h / 200), (x + w / 2, y + h / 2)
+    level, votes, surest, seen = None, collections.Counter(), OcrReading('', 0.0), []
+    views = [(tilt, width, centre) for tilt, width in _views(ink)]
+    for k, view in enumerate(views):
         first = None
-        for text, confidence, sure in _pictures(upright, expected):
-            if expected and text == expected and confidence >= _needed(tilt, width):
-                return _objected(drawn, OcrReading(text, confidence, float(tilt), width))
-            votes[_once(text, expected)] += 1
-            surest = max(surest, OcrReading(text, sure, float(tilt), width),
-                         key=lambda r: r.confidence)
-            first = first or (text, confidence)
+        for reading, sure in _read_view(ink, view, expected):
+            if expected and reading.text == expected and \
+                    reading.confidence >= _needed(reading.tilt, reading.width):
+                return _objected(drawn, _rivalled(reading, seen, ink, views[k:]))
+            seen.append(reading)
+            votes[_once(reading.text, expected)] += 1
+            surest = max(surest, reading._replace(confidence=sure), key=lambda r: r.confidence)
+            first = first or reading
         if level is None:
-            level = OcrReading(*first)
+            level = first
             if level.confidence >= CONFIDENT:   # it reads as another text as it lies: that is it
                 return level
     voted = _voted(votes, surest, expected)
     return _objected(drawn, voted) if voted else level
+
+
+def _read_view(ink, view, expected):
+    """Each reading of `ink` (thinned) seen at `view` (_views' degrees turned
+    back by about a centre, and share of its width), as (OcrReading,
+    _pictures' least sure letter)."""
+    tilt, width, centre = view
+    upright = turned(ink, -tilt, centre) if tilt else ink
+    if width != 1.0:
+        upright = [[(px * width, py) for px, py in line] for line in upright]
+    for text, confidence, sure in _pictures(upright, expected):
+        yield OcrReading(text, confidence, float(tilt), width), sure
+
+
+def _rivalled(reading, seen, ink, views):
+    """`reading` of the expected text, turned or narrowed, with the rival
+    reading that doubts it (_rival), if one does: of those `seen` before it
+    and of every reading of `views` (read only where one may doubt it)."""
+    text = reading.text
+    if (reading.tilt or reading.width != 1.0) and ('Q' in text or text in TWINS):
+        later = [r for view in views for r, _ in _read_view(ink, view, text)]
+        rival = next((r for r in seen + later if _rival(reading, r)), None)
+        if rival is not None:
+            return reading._replace(rival=rival)
+    return reading
+
+
+def _rival(reading, other):
+    """Whether OCR's `other` reading of the ink doubts its turned `reading`:
+    Tesseract reads a Q in round letters turned (a C, D, G, O or P 30 to 45
+    degrees off, 90% sure), so another letter read in a Q's place, less
+    than AS_SURE below it, leaves it in doubt (a DejaVu Sans Bold P turned
+    back 45 degrees read Q 90% sure, and 22.5 degrees, P 88%); and a
+    letter's twin (recognition.TWINS), read CONFIDENT a quarter-turn from
+    it and TWIN_LEVEL or more nearer level, is what a person reads (a
+    DejaVu Serif Bold Z 31 degrees off read N 91% turned back -45, and Z
+    85 to 90% turned back 30)."""
+    text, seen = reading.text, _once(other.text, reading.text)
+    if len(seen) == len(text) and other.confidence > reading.confidence - AS_SURE and \
+            any(a == 'Q' and b != 'Q' for a, b in zip(text, seen)):
+        return True
+    return seen == TWINS.get(text) and other.confidence >= CONFIDENT and \
+        quarter_apart(reading, other) and abs(other.tilt) + TWIN_LEVEL <= abs(reading.tilt)
 
 
 def _once(text, expected):
@@ -311,9 +356,10 @@ def supports(reading: OcrReading, expected: str, strokes=()) -> bool:
     95% sure, is credited.) Nor is it where OCR
     read the ink turned and the strokes' best fit is the expected letter's
     twin (recognition.TWINS): turned, a Z is an N to OCR; nor where the
-    views voted for it and the strokes lean to another text (_contradicted)."""
+    views voted for it and the strokes lean to another text (_contradicted);
+    nor where another of OCR's readings leaves it in doubt (_rival)."""
     if not (expected and reading.text == expected and not reading.objection and
-            reading.confidence >= _needed(reading.tilt, reading.width)):
+            reading.rival is None and reading.confidence >= _needed(reading.tilt, reading.width)):
         return False
     return not _contradicted(reading, strokes) and not any(
         r.letter not in (None, e) or (reading.tilt and _twin_fits(r, e))
@@ -361,5 +407,7 @@ def said(reading: OcrReading) -> str:
         narrowed += f'; {votes[reading.text]} of {sum(votes.values())} readings of it agree'
     objected = (f', but its strokes, cut not knowing the letters expected, read '
                 f'{reading.objection}') if reading.objection else ''
+    if reading.rival is not None:
+        objected += f', and {said(reading.rival)[len("OCR reads "):]}: it does not tell them apart'
     return f'OCR reads {reading.text} ({reading.confidence:.0f}% sure{tilted}{narrowed}){objected}'
 
