@@ -214,10 +214,10 @@ def _rivalled(reading, seen, ink, views):
 
 def _rival(reading, other):
     """Whether OCR's `other` reading of the ink doubts its turned `reading`:
-    Tesseract reads a Q in round letters turned (a C, D, G, O or P 30 to 45
-    degrees off, 90% sure), so another letter read in a Q's place, less
+    Tesseract reads a Q in round letters, level or turned (a C, D, G, O or
+    P, 86 to 93% sure), so another letter read in a Q's place, less
     than AS_SURE below it, leaves it in doubt (a DejaVu Sans Bold P turned
-    back 45 degrees read Q 90% sure, and 22.5 degrees, P 88%); and a
+    back 45 degrees read Q 90% sure, and 22.5 degrees, P 87%); and a
     letter's twin (recognition.TWINS), read CONFIDENT a quarter-turn from
     it and TWIN_LEVEL or more nearer level, is what a person reads (a
     DejaVu Serif Bold Z 31 degrees off read N 91% turned back -45, and Z
