@@ -491,11 +491,11 @@ def _unobjected(level, readings, expected):
         blind = _blind(row, len(expected))
     except Unfinished:
         blind = None        # not checked: not credited
-    bettered = {k for k in loose if blind is not None and _bettered(row, readings, expected, k)}
 
-    def denied(k):
-        return blind is None or k in bettered or (all(r.letter for r in blind) and
-                                                  plainly_other(blind[k], expected[k]))
+    def denied(k):      # the costly check (_bettered) last, where the others let it stand
+        return blind is None or (all(r.letter for r in blind) and
+                                 plainly_other(blind[k], expected[k])) or \
+            _bettered(row, readings, expected, k)
     return [Reading(None, r.best, r.fits) if k in loose and denied(k) else r
             for k, r in enumerate(readings)]
 
@@ -515,10 +515,13 @@ def _bettered(row, readings, expected, k):
     try:
         for _, letter in [(fit, c) for fit, c in fits if fit <= READABLE][:RIVALS]:
             other = expected[:k] + letter + expected[k + 1:]
-            read = [_as_expected(row, c, alone, shared)
-                    for c, (alone, shared) in zip(other, row.letters(cut(row, other)))]
-            if read[k].best is not None and read[k].best.fit <= CLEAN and \
-                    all(r.letter == c for r, c in zip(read, other)):
+            letters = row.letters(cut(row, other))
+
+            def reads(j):       # place k first: the others are read only where it reads so
+                return _as_expected(row, other[j], *letters[j]).letter == other[j]
+            place = _as_expected(row, letter, *letters[k])
+            if place.letter == letter and place.best.fit <= CLEAN and \
+                    all(reads(j) for j in range(len(other)) if j != k):
                 return True
     except Unfinished:
         pass
