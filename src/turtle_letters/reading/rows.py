@@ -516,12 +516,10 @@ def _bettered(row, readings, expected, k):
         for _, letter in [(fit, c) for fit, c in fits if fit <= READABLE][:RIVALS]:
             other = expected[:k] + letter + expected[k + 1:]
             letters = row.letters(cut(row, other))
-
-            def reads(j):       # place k first: the others are read only where it reads so
-                return _as_expected(row, other[j], *letters[j]).letter == other[j]
-            place = _as_expected(row, letter, *letters[k])
-            if place.letter == letter and place.best.fit <= CLEAN and \
-                    all(reads(j) for j in range(len(other)) if j != k):
+            place = _as_expected(row, letter, *letters[k])     # first: the others only if it reads
+            if place.letter == letter and place.best.fit <= CLEAN and all(
+                    _as_expected(row, c, *part).letter == c
+                    for j, (c, part) in enumerate(zip(other, letters)) if j != k):
                 return True
     except Unfinished:
         pass
