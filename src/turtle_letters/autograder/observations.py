@@ -28,6 +28,7 @@ INK = 1e-6          # m: a segment shorter than this is a pen turned in place, n
 # (a real class's scripts were judged ended halfway, or before their first move).
 SCRIPT_PAUSE = 4
 BACKGROUND = DEFAULT_BACKGROUND     # the grader's simulator's, until a clear or reset says
+FULLEST = 3         # canvases a drawing that never ended wiped, read at most (the fullest)
 
 
 class Drawing(NamedTuple):
@@ -52,6 +53,9 @@ class Drawing(NamedTuple):
     teleported_looks: List[tuple] = []  # ... the look of each of its lines
     earlier: List[list] = []        # ink left on the canvas from before the drawing: never read
     earlier_looks: List[tuple] = []     # ... the look of each of its lines
+    shown: tuple = ()           # (s, s) into the drawing the canvas stood, where not the one left
+    fullest: List[int] = []     # canvases (drawing()'s) it wiped, never ended: the fullest first
+
 
     @property
     def seconds(self):
@@ -65,12 +69,13 @@ class Drawing(NamedTuple):
         return [p for stroke in self.strokes for p in stroke]
 
 
-def of_run(run, settle):
-    """The drawing of a run (session.Run) from its trigger on; None if it
-    never reached the trigger."""
+def of_run(run, settle, canvas=None):
+    """The drawing of a run (session.Run) from its trigger on, on `canvas`
+    (drawing()); None if it never reached the trigger."""
     if run.trigger is None:
         return None
-    return drawing(run.record, run.events, run.since, settle, run.finished, run.script_until)
+    return drawing(run.record, run.events, run.since, settle, run.finished, run.script_until,
+                   canvas)
 
 
 def _ever_in_graph(events, role):
@@ -159,20 +164,25 @@ def _end(record, first, settle, until, script_until=None):
     return last if pause_ends(last, until, settle, script_until) else None
 
 
-def drawing(record, events, since, settle, until=math.inf, script_until=None) -> Drawing:
+def drawing(record, events, since, settle, until=math.inf, script_until=None,
+            canvas=None) -> Drawing:
     """The drawing that begins with the first move at or after `since`
     (the record's first line is the simulator's own turtle1), to a pause
     that ends it (pause_ends: `script_until`, t a shell script of the
-    submission was last seen running)."""
+    submission was last seen running). Its ink is what a canvas showed:
+    the one left (`canvas` None), else the one begun by the drawing's
+    clear or reset numbered `canvas` (-1: the first canvas, before any),
+    one of those a drawing that never ended wiped (Drawing.fullest)."""
     first = next(iter(moves(record, since, until)), None)
     if first is None:
         return Drawing([], None, None, 0, impostors(events))
     ended = _end(record, first, settle, until, script_until)
     stop = ended if ended is not None else until
     during = [e for e in record if first['t'] <= e['t'] <= stop]
-    wipes = [e for e in during if e['k'] in ('clear', 'reset')]
-    kept = [e for e in during if not wipes or e['t'] > wipes[-1]['t']]   # on the canvas left
-    background = tuple(wipes[-1].get('background', BACKGROUND)) if wipes else BACKGROUND
+    canvases = _canvases(during)
+    k = len(canvases) - 2 if canvas is None else canvas     # -1: before the first wipe
+    wipes, kept = [e for e in during if e['k'] in ('clear', 'reset')], canvases[k + 1]
+    background = tuple(wipes[k].get('background', BACKGROUND)) if k >= 0 else BACKGROUND
     driven = _inked(kept, 'move', background)
     jumps = [e for e in during if e['k'] == 'jump']
     turtles = list(dict.fromkeys(e['turtle'] for e in during if e['k'] in MOVES))
@@ -181,7 +191,11 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None) ->
     wiped = [(e['t'] - first['t'], e['k']) for e in wipes]
     lines, looks = strokes(driven)
     teleported, teleported_looks = strokes(_inked(kept, 'jump', background))
-    earlier, earlier_looks = _left_before(record, first['t'], stop, background)
+    left = k == len(wipes) - 1
+    earlier, earlier_looks = _left_before(record, first['t'], stop if left else first['t'],
+                                          background) if k < 0 or left else ([], [])
+    shown = () if left else (0.0 if k < 0 else wiped[k][0], wiped[k + 1][0])
+    fullest = _fullest(canvases, wipes) if ended is None and canvas is None else []
     return Drawing(lines, first['t'], ended, commands, impostors(events),
                    sum(e.get('n', 1) for e in jumps),
                    sum(1 for e in kept if e['k'] == 'jump' and e['ink']),
@@ -189,7 +203,34 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None) ->
                    wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
                    sum(1 for e in record[1:] if e['k'] == 'pen'),
                    sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')), looks, background,
-                   teleported, teleported_looks, earlier, earlier_looks)
+                   teleported, teleported_looks, earlier, earlier_looks, shown, fullest)
+
+
+def _canvases(during):
+    """The record `during` a drawing cut at each clear or reset: the lines
+    of each canvas it showed, in turn (the last: the one left)."""
+    canvases = [[]]
+    for e in during:
+        if e['k'] in ('clear', 'reset'):
+            canvases.append([])
+        else:
+            canvases[-1].append(e)
+    return canvases
+
+
+def _fullest(canvases, wipes):
+    """The canvases (as drawing() numbers them) a clear or reset wiped,
+    the most driven ink first, FULLEST at most: a writer that never ends
+    wipes its canvas and writes again, and the time limit stops it
+    mid-word (a real class's USI, written whole 72 s in, cleared 152 times
+    in 188 s; another's chase after an offender, its pen down, left more
+    ink than its word)."""
+    def ink(k):
+        background = tuple(wipes[k].get('background', BACKGROUND)) if k >= 0 else BACKGROUND
+        return sum(math.hypot(s[2] - s[0], s[3] - s[1])
+                   for _, s in _inked(canvases[k + 1], 'move', background) if s is not None)
+    inks = sorted(((ink(k), k) for k in range(-1, len(canvases) - 2)), key=lambda i: -i[0])
+    return [k for amount, k in inks if amount > 0][:FULLEST]
 
 
 def _left_before(record, start, stop, background):

@@ -205,10 +205,17 @@ def _talker(facts, _):
 def _wiped(facts):
     """Words for turtlesim's canvas cleared or reset while the turtle drew
     ('' if it was not): a student may start again, and what is graded is
-    the canvas as it was left, the ink laid after the last of them."""
+    the canvas as it was left, the ink laid after the last of them; or, of
+    a drawing that never ended, a canvas it wiped (Drawing.shown)."""
     d = facts.drawing
     if not d or not d.wiped:
         return ''
+    if d.shown:
+        begun, wiped = d.shown
+        return (f' (graded on the canvas turtlesim showed from {begun:.1f} to {wiped:.1f} s into '
+                f'the drawing, as a TA watching saw it: the drawing never ended, and turtlesim '
+                f'was cleared or reset {len(d.wiped)} times, last {d.wiped[-1][0]:.1f} s in; '
+                f'the canvas left then credits fewer letters)')
     seconds, what = d.wiped[-1]
     return (f' (graded on the canvas left after turtlesim was '
             f'{"cleared" if what == "clear" else "reset"} {seconds:.1f} s into the drawing' +

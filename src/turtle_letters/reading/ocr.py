@@ -158,7 +158,9 @@ def _read_text(ink, expected):
     if len(points) < 2 or dash(ink, max(1, len(expected))) or \
             flooded(ink, max(1, len(expected))):
         return OcrReading('', 0.0)     # a flood (ink.flooded): thinned, chords; whole, a blot
-    rows = levels(without_specks(ink), len(expected)) if len(expected) > 1 else []
+    kept = without_specks(ink)      # a level line beside specks is a dash too: no row to cut
+    rows = levels(kept, len(expected)) if len(expected) > 1 and not dash(kept, len(expected)) \
+        else []
     if rows and _plainly_other(rows, expected):
         rows = []       # not read letter by letter
     for slope, _, upright in rows:

@@ -296,3 +296,20 @@ def test_commands_published_where_no_node_subscribes_are_unheard():
     assert found['unheard'] == {'/cmd_vel': ['/my_initials_1']}
     gone = dict(kind='graph', t=2.0, unheard={})        # the node exited: the master forgot it
     assert unheard([dict(found, kind='graph', t=1.0), gone]) == {'/cmd_vel': ['/my_initials_1']}
+
+
+def test_a_drawing_that_never_ended_offers_the_canvases_it_wiped_the_fullest_first():
+    """A writer that never ends wipes its canvas and writes again: the
+    canvases it wiped, the fullest first, each a drawing of its own,
+    saying when it stood. A drawing that ended offers none."""
+    record = line(1, 1.0, 3.0) + [dict(k='clear', t=3.5)] + line(4, 1.0, 5.0) + \
+        [dict(k='reset', t=8.5)] + line(9, 1.0, 2.0)
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=record[-1]['t'])
+    assert d.ended is None and d.fullest == [0, -1] and d.shown == ()
+    assert [round(s[-1][0], 6) for s in d.strokes] == [2.0]
+    fullest = drawing(record, [graph()], since=0.5, settle=2.0, until=record[-1]['t'], canvas=0)
+    assert [round(s[-1][0], 6) for s in fullest.strokes] == [5.0]
+    assert fullest.shown == pytest.approx((3.5 - (1 + TICK), 8.5 - (1 + TICK)))
+    first = drawing(record, [graph()], since=0.5, settle=2.0, until=record[-1]['t'], canvas=-1)
+    assert [round(s[-1][0], 6) for s in first.strokes] == [3.0] and first.shown[0] == 0.0
+    assert drawing(record, [graph()], since=0.5, settle=2.0, until=20.0).fullest == []

@@ -150,3 +150,43 @@ def test_letters_read_in_one_line_of_writing_are_graded_there_and_the_row_says_s
         'drew SNB, as expected (read in the top line of the 2 lines of its writing)'
     assert marks['alone'][letter].output == 'drew SNB, as expected'
     assert marks['page'][accuracy] == marks['alone'][accuracy]
+
+
+def written(strokes, t, pen=(255, 255, 255, 4)):
+    """The simulator's record of a turtle writing `strokes` from `t`, a
+    point each 16 ms, travelling between them with its pen up; and when it ends."""
+    record = []
+    for stroke in strokes:
+        for (x0, y0), (x1, y1) in zip([stroke[0]] + stroke, stroke):
+            t += 0.016
+            ink = [[x0, y0, x1, y1, *pen]] if (x0, y0) != (x1, y1) else []
+            record.append(dict(k='move', t=t, turtle='turtle_main', to=[x1, y1, 0.0], ink=ink))
+    return record, t
+
+
+def test_a_writer_that_never_ends_is_read_on_the_fullest_canvas_it_wiped():
+    """The observe and read stages: a never-ending writer of USI (a real
+    class's), which clears the canvas and writes again, stopped by the time
+    limit with its U begun and a long chase laid, its pen down. The canvas
+    left is read first; a TA saw USI written whole before a clear, and that
+    canvas is graded, the row says so. A writer that ended is graded on the
+    canvas it left."""
+    from support.cadet_paths import driven, forward
+    from support.glyph_rows import row
+    from turtle_letters.autograder import observations as seen
+    whole, t = written(row('USI'), 2.0)
+    begun, end = written([row('U')[0][:len(row('U')[0]) // 2]], t + 1.0)
+    wandering, end = written([driven([forward(0.5)] * 40, 9.0, 1.0)], end)
+    run = run_of('usi')
+    run.record += whole + [dict(k='clear', t=t + 0.5)] + begun + wandering
+    run.since, run.trigger, run.finished, run.script_until = 1.5, 1.5, end, None
+    facts = driver.observed('USI', run, RUBRIC)
+    assert rubrics.drawn_text(facts) == 'USI' and facts.drawing.shown[0] == 0.0
+    letter = {m.name: m for m in rubrics.grade(facts, RUBRIC).tests}[
+        'The letter drawn is the expected one'].output
+    assert letter.startswith('drew USI, as expected (graded on the canvas turtlesim showed from '
+                             '0.0 to ') and 'the drawing never ended' in letter
+    # ended: standing still long after, the canvas left is what counts
+    run.finished = end + 60
+    assert seen.of_run(run, RUBRIC.limits.settle).fullest == []
+    assert rubrics.drawn_text(driver.observed('USI', run, RUBRIC)) != 'USI'

@@ -390,3 +390,13 @@ def test_a_turned_reading_another_of_ocrs_readings_doubts_is_not_credited(
     assert not supports(reading, graded) and said(reading).endswith('does not tell them apart')
     if letter != 'O':       # OCR reads the O as nothing else either
         assert supports(read_text(ink, letter), letter)
+
+
+def test_a_level_line_beside_specks_is_no_row_to_cut_and_raises_nothing():
+    """Half a U's stroke, then 20 m driven dead level below it (a writer
+    that never ends, begun again): beside the line, the stroke is a speck,
+    and the line a dash, no row to cut into letters (it had no height to
+    cut by, and raised ZeroDivisionError)."""
+    ink = [[(1.0, 5.0), (1.0, 3.3), (1.3, 3.0)], [(9.0 + 0.01 * i, 1.0) for i in range(2001)]]
+    for expected in ('US', 'USI'):
+        assert not supports(read_text(ink, expected), expected)
