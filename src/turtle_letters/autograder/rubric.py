@@ -217,9 +217,18 @@ def _wiped(facts):
                 f'was cleared or reset {len(d.wiped)} times, last {d.wiped[-1][0]:.1f} s in; '
                 f'the canvas left then credits fewer letters)')
     seconds, what = d.wiped[-1]
+    # driver.observed read the fullest canvases wiped where this one credits not every letter
+    tried = d.fullest and len(_right(facts)) < len(facts.expected)
     return (f' (graded on the canvas left after turtlesim was '
             f'{"cleared" if what == "clear" else "reset"} {seconds:.1f} s into the drawing' +
-            (f', the last of {len(d.wiped)} times' if len(d.wiped) > 1 else '') + ')')
+            (f', the last of {len(d.wiped)} times' if len(d.wiped) > 1 else '') +
+            (f'; the drawing never ended, and the {_fullest(len(d.fullest))} it wiped '
+             f'credit{"s" if len(d.fullest) == 1 else ""} no more letters' if tried else '') +
+            ')')
+
+
+def _fullest(count):
+    return 'fullest canvas' if count == 1 else f'{count} fullest canvases'
 
 
 def _shapes(readings):

@@ -190,3 +190,9 @@ def test_a_writer_that_never_ends_is_read_on_the_fullest_canvas_it_wiped():
     run.finished = end + 60
     assert seen.of_run(run, RUBRIC.limits.settle).fullest == []
     assert rubrics.drawn_text(driver.observed('USI', run, RUBRIC)) != 'USI'
+    run.finished = end
+    # a wiped canvas that credits no more: the canvas left, and the row says both
+    dash, t = written([[(1.0, 1.0), (1.5, 1.0)]], 2.0)
+    run.record[1:] = dash + [dict(k='clear', t=t + 0.5)] + begun + wandering
+    assert rubrics.letter_line(driver.observed('USI', run, RUBRIC)).endswith(
+        'the drawing never ended, and the fullest canvas it wiped credits no more letters)')
