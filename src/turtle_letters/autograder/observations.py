@@ -56,7 +56,6 @@ class Drawing(NamedTuple):
     shown: tuple = ()           # (s, s) into the drawing the canvas stood, where not the one left
     fullest: List[int] = []     # canvases (drawing()'s) it wiped, never ended: the fullest first
 
-
     @property
     def seconds(self):
         """How long the turtles drew: to the end, or to the last move seen."""
@@ -182,7 +181,7 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None,
     canvases = _canvases(during)
     k = len(canvases) - 2 if canvas is None else canvas     # -1: before the first wipe
     wipes, kept = [e for e in during if e['k'] in ('clear', 'reset')], canvases[k + 1]
-    background = tuple(wipes[k].get('background', BACKGROUND)) if k >= 0 else BACKGROUND
+    background = _background(wipes, k)
     driven = _inked(kept, 'move', background)
     jumps = [e for e in during if e['k'] == 'jump']
     turtles = list(dict.fromkeys(e['turtle'] for e in during if e['k'] in MOVES))
@@ -226,11 +225,16 @@ def _fullest(canvases, wipes):
     in 188 s; another's chase after an offender, its pen down, left more
     ink than its word)."""
     def ink(k):
-        background = tuple(wipes[k].get('background', BACKGROUND)) if k >= 0 else BACKGROUND
         return sum(math.hypot(s[2] - s[0], s[3] - s[1])
-                   for _, s in _inked(canvases[k + 1], 'move', background) if s is not None)
+                   for _, s in _inked(canvases[k + 1], 'move', _background(wipes, k))
+                   if s is not None)
     inks = sorted(((ink(k), k) for k in range(-1, len(canvases) - 2)), key=lambda i: -i[0])
     return [k for amount, k in inks if amount > 0][:FULLEST]
+
+
+def _background(wipes, k):
+    """The canvas's colour after wipe k (-1: none yet, the simulator's own)."""
+    return tuple(wipes[k].get('background', BACKGROUND)) if k >= 0 else BACKGROUND
 
 
 def _left_before(record, start, stop, background):

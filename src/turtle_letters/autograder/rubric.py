@@ -222,12 +222,12 @@ def _wiped(facts):
     return (f' (graded on the canvas left after turtlesim was '
             f'{"cleared" if what == "clear" else "reset"} {seconds:.1f} s into the drawing' +
             (f', the last of {len(d.wiped)} times' if len(d.wiped) > 1 else '') +
-            (f'; the drawing never ended, and the {_fullest(len(d.fullest))} it wiped '
+            (f'; the drawing never ended, and the {_the_fullest(len(d.fullest))} it wiped '
              f'credit{"s" if len(d.fullest) == 1 else ""} no more letters' if tried else '') +
             ')')
 
 
-def _fullest(count):
+def _the_fullest(count):
     return 'fullest canvas' if count == 1 else f'{count} fullest canvases'
 
 
