@@ -9,12 +9,12 @@ source "$(dirname "$0")/env.sh"
 # and matplotlib (rqt_plot's, in every desktop install) only that;
 # Tesseract reads the letters a person sees, scipy measures how far ink lies
 # from a letter's strokes; fonttools with Liberation's and DejaVu's bold fonts
-# give block letters (the reader's, and the benchmark's).
+# give block letters (the reader's, and the benchmark's); pytest-xdist runs
+# the unit tests two at a time.
 COMMON="bubblewrap g++ git hershey-fonts-data iproute2 python3-numpy python3-pytest
-        python3-pytest-xdist python3-pyqt5
-        python3-tqdm python3-yaml python3-tornado tmux tesseract-ocr tesseract-ocr-eng
-        python3-tesserocr python3-pil python3-fonttools fonts-dejavu-core fonts-liberation
-        python3-scipy python3-matplotlib"
+        python3-pytest-xdist python3-pyqt5 python3-tqdm python3-yaml python3-tornado tmux
+        tesseract-ocr tesseract-ocr-eng python3-tesserocr python3-pil python3-fonttools
+        fonts-dejavu-core fonts-liberation python3-scipy python3-matplotlib"
 if [ -d /opt/ros/noetic ]; then
   # Ubuntu 20.04 with ROS Noetic: the real turtlesim. (Its chromium is a snap:
   # the viewer's browser test says it has no chromium-driver there, and skips.)
