@@ -12,10 +12,11 @@ and answers with the command for the next tick, or None when it is done.
   used, and the last tick gets the fraction of the speed that completes the
   amount: exact on any machine. A tick that went too far because a command
   came late (a busy machine, a network) is taken back: the turtle backs up,
-  or turns back, along its own line. On the wall clock, as the lab's
-  rospy.Time.now() loop does, it commands the speed until amount / speed
-  seconds have passed; a busy machine slows the simulator's ticks, so the
-  turtle then comes up short.
+  or turns back, along its own line; over a slow network it slows into
+  the end (APPROACH), so that a command held up runs on less past it. On
+  the wall clock, as the lab's rospy.Time.now() loop does, it commands the
+  speed until amount / speed seconds have passed; a busy machine slows the
+  simulator's ticks, so the turtle then comes up short.
 - Feedback (closed loop on the pose): steer to the primitive's absolute target
   in the turtle's own frame. Each command is at most half the remaining error
   per tick, so a command the simulator applies twice (it arrived a tick late)
@@ -32,6 +33,10 @@ from .latency import Ahead, shows
 
 SETTLED = 1e-5              # m or rad: a timed primitive is done this close to its amount
 SETTLE_TICKS = 4            # a timed primitive's way back is spread over this many ticks
+# Over a slow network a timed primitive slows into its end no harder than this (m/s^2,
+# or rad/s^2): a command held up on its way leaves turtlesim driving the one before it
+# on, and the slower that one, the less ink runs past the end.
+APPROACH = 1.0
 POSITION_TOLERANCE = 1e-4   # m: feedback stops this close to a vertex
 HEADING_TOLERANCE = 1e-4    # rad
 # Over a slow network a pose is a guess (where the commands in flight lead):
@@ -88,6 +93,14 @@ class TimedExecutor:
         part = 2 if self.turning else 0
         return sum(c[part] * self.sign * SIM_TICK for c in self.latency.in_flight(self.first))
 
+    def _approach(self, remaining) -> float:
+        """The speed from which the turtle stops within `remaining` slowing at
+        APPROACH, over a slow network (none is needed otherwise: each command
+        acts at the next tick)."""
+        if self.latency is None or not self.latency.lag:
+            return math.inf
+        return math.sqrt(2 * APPROACH * remaining)
+
     def _command(self) -> Optional[Command]:
         remaining = (self.amount - self.elapsed_amount - self._on_the_way()) * self.way
         if remaining <= 1e-9:
@@ -99,7 +112,7 @@ class TimedExecutor:
         if self.clock == 'wall':
             speed = self.speed
         else:
-            speed = self.way * min(self.cap, remaining / SIM_TICK)
+            speed = self.way * min(self.cap, remaining / SIM_TICK, self._approach(remaining))
         speed *= self.sign
         return Command(angular=speed) if self.turning else Command(linear_x=speed)
 
