@@ -8,8 +8,8 @@ namespaces on one host, joined by a bridge, each with its own /etc/hosts
 - carol: her controller on a slow link: her commands and her turtle's
   poses each pass a delay_relay.py on her machine, 50 ms +- 30 ms late
   (this machine has no netem); her letter as exact as the others' (a
-  stall of a relay or of the machine beyond ~50 ms runs a command on past
-  a corner by more than the tolerance: doc/classroom.md says so);
+  long stall of a relay or of the machine runs a command on past a
+  corner: doc/classroom.md says how far);
 - eve: student.launch on a machine whose name the master's machine cannot
   resolve, so turtlesim cannot connect to her cmd_vel: the diagnosis line
   comes within 3 s of the trigger, and her launch still stops on Ctrl-C.

@@ -9,7 +9,7 @@ import random
 
 import pytest
 
-from support.accuracy import lab_n, primitives_of, slow_network_budget_s
+from support.accuracy import lab_n, primitives_of, slow_network_budget_s, worst_distance_from
 from support.ticks import sample
 from turtle_letters.letters.layout import SIM_TICK
 from turtle_letters.letters.geometry import PlannedPose
@@ -212,15 +212,6 @@ def test_over_a_link_that_stalls_the_ink_runs_little_past_a_corner(stall, share,
                              for p in primitives], 3, 2, seed, Latency(),
                             link=lambda d, j, rng: StallingLink(d, j, rng, stall, share))
         assert max(min(math.dist(c, at) for at in track) for c in corners[1:]) < 0.005, seed
-        runs_on = max(min(_off_segment(at, a, b) for a, b in zip(corners, corners[1:]))
-                      for at in track)
+        runs_on = worst_distance_from(track, corners)
         assert runs_on < most, (seed, runs_on)
 
-
-def _off_segment(point, a, b):
-    """How far `point` lies from the segment from `a` to `b`."""
-    (ax, ay), (bx, by), (px, py) = a, b, point
-    length = (bx - ax) ** 2 + (by - ay) ** 2
-    t = 0.0 if not length else max(0.0, min(1.0, ((px - ax) * (bx - ax) + (py - ay) *
-                                                   (by - ay)) / length))
-    return math.hypot(px - ax - t * (bx - ax), py - ay - t * (by - ay))
