@@ -44,7 +44,7 @@ CONCLUSIONS = {
     'c10_sam': ('S', '', 'fail', f'no package.xml in {SUBMISSIONS}/c10_sam: nothing a catkin'),
     'c11_zoe': ('Z', '', 'fail', 'no submission'),
     'c12_ursula': ('U', 'I', 'fail', 'turtlesim was cleared'),     # the canvas left: one stroke
-    'c13_victor': ('V', 'V', 'pass', 'drives the turtle and published "P"'),
+    'c13_victor': ('V', 'V', 'pass', 'drives the turtle and published "P"'),    # a lead-in
     # a pause of 3 s between strokes; his talker in an xterm, his turtlesim in a
     # gnome-terminal (launch-prefix), as on his desktop
     'c14_lars': ('L', 'L', 'pass', 'every criterion met'),
@@ -103,6 +103,9 @@ def test_each_criterion_says_what_happened(graded):
         'output']
     assert '/f_drawer' in tests('c09_fatima')['The turtle was driven over cmd_vel']['output']
     assert tests('c02_kofi')['Its accuracy']['score'] > 10
+    # Victor drove to where his V begins with his pen down: read past that lead-in
+    assert 'read without its lead-in' in tests('c13_victor')[
+        'The letter drawn is the expected one']['output']
 
 
 def test_the_files_handed_back(graded):

@@ -122,7 +122,7 @@ def read(drawing, expected):
     (told_apart)."""
     if drawing is None or not drawing.strokes:
         return Page([], Writing([], []), ''), None
-    page = read_page(drawing.strokes, drawing.looks, expected)
+    page = read_page(drawing.strokes, drawing.looks, expected, drawing.homes)
     page = page._replace(readings=told_apart(page.writing.ink, page.readings))
     if rubrics.drawn(page.readings) == expected:
         return page, None

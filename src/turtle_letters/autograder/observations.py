@@ -55,6 +55,7 @@ class Drawing(NamedTuple):
     earlier_looks: List[tuple] = []     # ... the look of each of its lines
     shown: tuple = ()           # (s, s) into the drawing the canvas stood, where not the one left
     fullest: List[int] = []     # canvases (drawing()'s) it wiped, never ended: the fullest first
+    homes: List[tuple] = []     # (x, y) where each turtle appeared (spawned, or put back by a reset)
 
     @property
     def seconds(self):
@@ -202,7 +203,16 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None,
                    wiped, turtles, sum(1 for e in during if e['k'] == 'pen' and e['off']),
                    sum(1 for e in record[1:] if e['k'] == 'pen'),
                    sum(1 for e in record[1:] if e['k'] in ('spawn', 'kill')), looks, background,
-                   teleported, teleported_looks, earlier, earlier_looks, shown, fullest)
+                   teleported, teleported_looks, earlier, earlier_looks, shown, fullest,
+                   _homes(record, stop))
+
+
+def _homes(record, stop):
+    """(x, y) of each spawn by `stop` (turtle1's own, and a reset's, at
+    turtlesim's centre): where a turtle began, its pen down (page.read_page
+    reads past a lead-in from there)."""
+    return sorted({(e['x'], e['y']) for e in record
+                   if e['k'] == 'spawn' and e['t'] <= stop and 'x' in e})
 
 
 def _canvases(during):

@@ -21,6 +21,7 @@ STRAIGHT = 0.03     # share of its length within which ink lies along one line: 
 RUN_TURN = 10       # degrees a line's last straight run strays from its last heading, at most
 OVERSHOOT = 1 / 3   # share of that run that may stick out past the rest of the ink: driven on
 LONG_RUN = 0.5      # ... where the run is this share of the rest's larger side long, at least
+HOME_NEAR = 0.01    # m: a line begun this near where a turtle appeared begins there
 
 
 def box(points):
@@ -167,6 +168,24 @@ def ends_driven_on(ink):
             kept = [p for p in line[run:] if numpy.dot(numpy.subtract(p, start), end - start)
                     < leaves * long * long]
             trimmed[k], changed = list(line[:run]) + kept + [cut], True
+    return trimmed if changed else None
+
+
+def led_in(ink, homes):
+    """`ink` less each lead-in: the first straight run (within RUN_TURN of
+    its first heading) of a line begun where a turtle appeared (`homes`),
+    where the line turns on past it: the way a turtle drove, its pen
+    down, to where its letter begins (a real class's B, drawn by
+    `rostopic pub` alone, began with a 4 m line from turtlesim's centre).
+    None where no line begins so."""
+    trimmed, changed = [list(line) for line in ink], False
+    for k, line in enumerate(ink):
+        if not line or not any(math.dist(line[0], home) <= HOME_NEAR for home in homes):
+            continue
+        back = _last_run(line[::-1])
+        end = None if back is None else len(line) - 1 - back   # where the first run ends
+        if end is not None and 0 < end < len(line) - 1:
+            trimmed[k], changed = list(line[end:]), True
     return trimmed if changed else None
 
 

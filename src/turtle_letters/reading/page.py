@@ -14,7 +14,7 @@ from typing import List, NamedTuple
 
 import numpy
 
-from .ink import box, dash, ends_driven_on, flooded, samples
+from .ink import box, dash, ends_driven_on, flooded, led_in, samples
 from .forms import CLEAN
 from .recognition import Reading, Unfinished, bounded
 from .rows import apart, in_colours, read_blind, read_row, without_specks
@@ -29,6 +29,8 @@ LINE_GAP = 0.15     # clear space between two lines of writing, share of the tal
 TOP_LINE = 0.5
 DRIVEN_ON = ("read with a stroke's end that ran on past the rest of its letter cut back: "
              "turtlesim drives a command on for up to a second")
+LED_IN = ("read without its lead-in, the straight line its turtle drew from where it "
+          "appeared to where its letter begins (lift the pen, or teleport, to get there)")
 LETTER_WIDTH = 0.7  # share of its height a letter is wide, to count the letters of a line by
 
 
@@ -45,9 +47,10 @@ class Page(NamedTuple):
     where: str          # '' for the canvas whole, else which of its writing was read
 
 
-def read_page(ink, looks, expected) -> Page:
+def read_page(ink, looks, expected, homes=()) -> Page:
     """The readings of the letters `expected` in `ink` (its lines' `looks`,
-    as the simulator recorded them, or none), where a TA looks first: the
+    as the simulator recorded them, or none; `homes`, the points where
+    turtles appeared), where a TA looks first: the
     writing without a frame round it, then its line of writing
     (writing_on), the first that reads them all kept; else the canvas
     whole (_read), unless one of those read more letters in place (the
@@ -56,40 +59,46 @@ def read_page(ink, looks, expected) -> Page:
     a picture above it as one row (a real XAVIERA below a heart: 1.7 s
     read whole first, 0.8 s so). Its cost is bounded (recognition.bounded)."""
     with bounded():
-        return _read_page(ink, looks, expected)
+        return _read_page(ink, looks, expected, homes)
 
 
-def _read_page(ink, looks, expected):
+def _read_page(ink, looks, expected, homes):
     """The page as read_page finds it; where it does not read every letter, the
-    writing it was read in read again with its lines' ends driven on cut back
-    (ink.ends_driven_on), kept where so more letters read in place, none
-    of them where the writing as drawn reads another (_unless_drawn_otherwise)."""
-    page = _first_read(ink, looks, expected)
-    trimmed = None if _in_place(page.readings, expected) == len(expected) else \
-        ends_driven_on(page.writing.ink)
-    if trimmed is None:
-        return page
-    writing = Writing(trimmed, page.writing.looks)
-    readings = _unless_drawn_otherwise(page, _read(trimmed, writing.looks, expected), expected)
-    again = Page(readings, writing, ', '.join(filter(None, (page.where, DRIVEN_ON))))
-    return again if _in_place(again.readings, expected) > _in_place(page.readings, expected) \
-        else page
+    writing it was read in read again as a TA looks past what is not the
+    letters: its lines' ends driven on cut back (ink.ends_driven_on), then
+    a lead-in from where a turtle appeared (ink.led_in). Each is kept
+    where so more letters read in place, none of them where the writing
+    as drawn reads another (_unless_drawn_otherwise)."""
+    drawn = page = _first_read(ink, looks, expected)
+    for trim, said in ((ends_driven_on, DRIVEN_ON), (lambda lines: led_in(lines, homes), LED_IN)):
+        trimmed = None if _in_place(page.readings, expected) == len(expected) else \
+            trim(page.writing.ink)
+        if trimmed is None:
+            continue
+        writing = Writing(trimmed, page.writing.looks)
+        readings = _unless_drawn_otherwise(drawn, page, _read(trimmed, writing.looks, expected),
+                                           expected)
+        again = Page(readings, writing, ', '.join(filter(None, (page.where, said))))
+        if _in_place(again.readings, expected) > _in_place(page.readings, expected):
+            page = again
+    return page
 
 
-def _unless_drawn_otherwise(page, readings, expected):
-    """`readings` of `page`'s writing cut back (ink.ends_driven_on), each
-    letter they gain dropped where the writing as drawn, read not knowing
-    the roster (_blind), reads another within CLEAN in its place, or where
-    the effort was spent first: a stroke that ends lower than the rest of
-    a tilted row is no stroke driven on (a cadets' KB tilted 30 degrees, its
-    K's stem cut back to half, read KH; as drawn, read blind, KB within 1%
-    of its height, though an H fits the B within 7%)."""
+def _unless_drawn_otherwise(drawn, page, readings, expected):
+    """`readings` of `page`'s writing trimmed (_read_page), each letter they
+    gain dropped where the writing as `drawn`, read not knowing the roster
+    (_blind), reads another within CLEAN in its place, or where the effort
+    was spent first: a stroke that ends lower than the rest of a tilted row
+    is no stroke driven on (a cadets' KB tilted 30 degrees, its K's stem cut
+    back to half, read KH; as drawn, read blind, KB within 1% of its height,
+    though an H fits the B within 7%), nor is an E's first bar, begun where
+    the turtle appeared, a lead-in to an F."""
     gained = {k for k, (now, was, e) in enumerate(zip(readings, page.readings, expected))
               if now.letter == e != was.letter}
     if not gained:
         return readings
     try:
-        blind = _blind(page.writing, len(expected))
+        blind = _blind(drawn.writing, len(expected))
     except Unfinished:
         blind = None        # not checked: not credited
     return [Reading(None, r.best, r.fits) if k in gained and (

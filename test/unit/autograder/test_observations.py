@@ -313,3 +313,16 @@ def test_a_drawing_that_never_ended_offers_the_canvases_it_wiped_the_fullest_fir
     first = drawing(record, [graph()], since=0.5, settle=2.0, until=record[-1]['t'], canvas=-1)
     assert [round(s[-1][0], 6) for s in first.strokes] == [3.0] and first.shown[0] == 0.0
     assert drawing(record, [graph()], since=0.5, settle=2.0, until=20.0).fullest == []
+
+
+def test_where_each_turtle_appeared_is_kept_for_reading_past_a_lead_in():
+    """turtle1 at turtlesim's centre, a turtle spawned while the drawing ran,
+    and turtle1 put back by a reset are where lines may begin with a lead-in;
+    a spawn after the drawing ended is not."""
+    centre = dict(k='spawn', t=0.0, turtle='turtle1', x=5.544445, y=5.544445, theta=0.0)
+    record = [centre] + line(1, 5.544445, 7.0) + [
+        dict(k='spawn', t=1.5, turtle='t2', x=2.0, y=3.0, theta=0.0),
+        dict(centre, t=1.6)] + line(2, 2.0, 3.0, turtle='t2') + [
+        dict(k='spawn', t=11.0, turtle='t3', x=9.0, y=9.0, theta=0.0)]
+    d = drawing(record, [graph()], since=0.5, settle=2.0, until=12.0)
+    assert d.homes == [(2.0, 3.0), (5.544445, 5.544445)]

@@ -261,3 +261,67 @@ def test_a_letter_the_ink_cut_back_gains_where_the_ink_as_drawn_reads_another_is
     assert letters(read_page(ink, [], 'KB')) == 'KB'
     read = letters(read_page(ink, [], 'KH'))
     assert read[1] != 'H', read
+
+
+HOME = (5.544445, 5.544445)     # where turtlesim puts turtle1 (the contract)
+
+
+def begun_at(strokes, start, lead_in=True, size=3.0, at=(1.0, 2.0)):
+    """A letter's `strokes` (letter units) `size` m high, each driven as
+    turtlesim leaves it: its first stroke begun at `start`, after a
+    straight lead-in from there to the letter's lower left at `at`
+    (`lead_in`), or the letter placed to begin there."""
+    xs, ys = [p[0] for s in strokes for p in s], [p[1] for s in strokes for p in s]
+    k = size / (max(ys) - min(ys))
+    origin = at if lead_in else (start[0] - (strokes[0][0][0] - min(xs)) * k,
+                                 start[1] - (strokes[0][0][1] - min(ys)) * k)
+    placed = [[(origin[0] + (x - min(xs)) * k, origin[1] + (y - min(ys)) * k) for x, y in s]
+              for s in strokes]
+    first = [start] + placed[0] if lead_in else placed[0]
+    return [driven(s[0], [(b[0] - a[0], b[1] - a[1]) for a, b in zip(s, s[1:])])
+            for s in [first] + placed[1:]]
+
+
+def glyph(family, letter):
+    from turtle_letters.letters.font import FONT
+    from turtle_letters.reading.forms import VARIANTS
+    return FONT[letter].strokes if family == 'font' else dict(VARIANTS)[letter]
+
+
+@pytest.mark.parametrize('family, letter', [('font', 'B'), ('font', 'Z'), ('cadets', 'S'),
+                                            ('cadets', 'M')])
+def test_a_letter_begun_by_a_lead_in_from_where_its_turtle_appeared_reads_past_it(
+        family, letter):
+    """A turtle driven with its pen down from turtlesim's centre to where
+    its letter begins (a real class's B, by `rostopic pub` alone) left a
+    straight line into the letter's first stroke: read with it, no letter;
+    read past it, the letter, and the row says so. Nothing else earns."""
+    import string
+    from turtle_letters.reading.page import LED_IN
+    ink = begun_at(glyph(family, letter), HOME)
+    assert letters(read_page(ink, [], letter)) == '?'
+    page = read_page(ink, [], letter, [HOME])
+    assert letters(page) == letter and page.where == LED_IN
+    assert [c for c in string.ascii_uppercase
+            if letters(read_page(ink, [], c, [HOME])) == c] == [letter]
+
+
+@pytest.mark.parametrize('family, letter, other', [
+    ('font', 'D', 'J'), ('font', 'N', 'V'), ('font', 'Y', 'F'), ('cadets', 'W', 'N'),
+    ('cadets', 'C', 'L')])
+def test_a_first_stroke_begun_where_the_turtle_appeared_is_no_lead_in_to_another_letter(
+        family, letter, other):
+    """A letter begun where its turtle appeared has no lead-in: its first
+    stroke cut off leaves another letter (a D's stem, a J), which the ink
+    as drawn, read not knowing the roster, denies."""
+    ink = begun_at(glyph(family, letter), HOME, lead_in=False)
+    assert letters(read_page(ink, [], letter, [HOME])) == letter
+    assert letters(read_page(ink, [], other, [HOME])) != other
+
+
+def test_only_a_straight_run_from_where_a_turtle_appeared_into_more_ink_is_a_lead_in():
+    from turtle_letters.reading.ink import led_in
+    into_l = driven(HOME, [(-2, 0), (0, 3)])
+    assert led_in([into_l], [HOME]) == [into_l[round(2 / 0.016):]]
+    assert led_in([into_l], [(1.0, 1.0)]) is None       # begun elsewhere: no turtle appeared there
+    assert led_in([driven(HOME, [(-2, 0)])], [HOME]) is None    # all one run: a stroke

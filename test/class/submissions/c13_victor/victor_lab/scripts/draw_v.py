@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""On P, a V 2 m tall; and since the talker "never worked on my laptop",
-the controller publishes that P itself, a second after it starts."""
+"""On P, a V 2 m tall, 2 m right of where the turtle starts: it drives
+there with its pen down (a lead-in); and since the talker "never worked
+on my laptop", the controller publishes that P itself, a second after it
+starts."""
 import math
 
 import rospy
@@ -25,6 +27,7 @@ def draw_v(message):
         return
     drawn = True
     slope = math.atan2(2.0, 0.75)
+    step(cmd, 1.0, 0, 2.0)
     step(cmd, 0, -1.0, slope)
     step(cmd, 1.0, 0, math.hypot(2.0, 0.75))
     step(cmd, 0, 1.0, 2 * slope)
