@@ -55,7 +55,7 @@ class Drawing(NamedTuple):
     earlier_looks: List[tuple] = []     # ... the look of each of its lines
     shown: tuple = ()           # (s, s) into the drawing the canvas stood, where not the one left
     fullest: List[int] = []     # canvases (drawing()'s) it wiped, never ended: the fullest first
-    homes: List[tuple] = []     # (x, y) where each turtle appeared (spawned, or put back by a reset)
+    homes: List[tuple] = []     # (x, y) where each turtle appeared (spawned, or reset)
 
     @property
     def seconds(self):
