@@ -7,6 +7,7 @@ import yaml
 
 from ..isolation.files import shown
 from ..reading.cleanness import strays
+from ..reading.forms import CLEAN
 from ..reading.ink import LONGEST, box, flooded
 from ..reading.ocr import OcrReading, said as ocr_said, supports
 from ..reading.recognition import Reading
@@ -333,8 +334,21 @@ def _letter_read(facts, _):
     wrong = f'drew {text}, expected {facts.expected}'
     small_l = _small_l(text, facts.expected) + _cut_short(facts)
     if len(facts.expected) == 1:
-        return 0.0, wrong + small_l
+        return 0.0, (_loosely(read[0], facts.expected) if len(read) == 1 else wrong) + small_l
     return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place{small_l}'
+
+
+def _loosely(reading, expected):
+    """Words for one letter read as another: 'drew' it where it reads within
+    CLEAN; else only what it lies nearest, for it reads no letter beyond
+    doubt (a real class's cursive L, its loops at both ends, lay nearest a
+    P tilted 48 degrees, 10% of its height off: it drew no P)."""
+    fit = reading.best.fit
+    if fit <= CLEAN:
+        return f'drew {reading.letter}, expected {expected}'
+    return (f'no letter reads cleanly, and {reading.letter} is the nearest, {100 * fit:.0f}% of '
+            f'its height off (within {100 * CLEAN:g}% a letter reads beyond doubt): '
+            f'expected {expected}')
 
 
 def _cut_short(facts):

@@ -134,6 +134,21 @@ def test_a_letter_cut_short_by_a_script_stopped_at_a_rostopic_pub_says_where():
     assert scores_of(right)['The letter drawn is the expected one'] == (25, 'drew L, as expected')
 
 
+def test_a_letter_read_only_loosely_as_another_is_not_said_to_be_drawn():
+    """An L whose foot droops 0.3 m lies nearest an L, 9% of its height off:
+    no letter reads beyond doubt, and graded against K the row says what it
+    lies nearest, not that the student drew it (a real class's cursive L
+    was told it drew a P). Within CLEAN (a droop of 0.1 m, 4%) it drew an L."""
+    drooping = Drawing([[(1.0, 3.0), (1.0, 1.0), (2.2, 0.7)]], 1.0, 5.0, 200, [])
+    line = scores_of(grade(facts(drooping, expected='K'), load(DEFAULT)))[
+        'The letter drawn is the expected one']
+    assert line == (0, 'no letter reads cleanly, and L is the nearest, 9% of its height off '
+                       '(within 7.5% a letter reads beyond doubt): expected K')
+    clean = Drawing([[(1.0, 3.0), (1.0, 1.0), (2.2, 0.9)]], 1.0, 5.0, 200, [])
+    assert scores_of(grade(facts(clean, expected='K'), load(DEFAULT)))[
+        'The letter drawn is the expected one'] == (0, 'drew L, expected K')
+
+
 def test_the_wrong_letter_earns_no_accuracy():
     graded = grade(facts(expected='K'), load(DEFAULT))
     lines = scores_of(graded)
