@@ -212,7 +212,7 @@ def _homes(record, stop):
     turtlesim's centre): where a turtle began, its pen down (page.read_page
     reads past a lead-in from there)."""
     return sorted({(e['x'], e['y']) for e in record
-                   if e['k'] == 'spawn' and e['t'] <= stop and 'x' in e})
+                   if e['k'] == 'spawn' and e['t'] <= stop})
 
 
 def _canvases(during):

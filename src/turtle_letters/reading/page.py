@@ -91,8 +91,8 @@ def _unless_drawn_otherwise(drawn, page, readings, expected):
     was spent first: a stroke that ends lower than the rest of a tilted row
     is no stroke driven on (a cadets' KB tilted 30 degrees, its K's stem cut
     back to half, read KH; as drawn, read blind, KB within 1% of its height,
-    though an H fits the B within 7%), nor is an E's first bar, begun where
-    the turtle appeared, a lead-in to an F."""
+    though an H fits the B within 7%), nor is a D's stem, begun where the
+    turtle appeared, a lead-in to a J."""
     gained = {k for k, (now, was, e) in enumerate(zip(readings, page.readings, expected))
               if now.letter == e != was.letter}
     if not gained:

@@ -206,8 +206,10 @@ def test_a_pause_while_a_shell_script_runs_ends_the_drawing_only_when_much_longe
 
 
 def test_spawns_kills_and_pens_count_from_the_launch_but_the_simulators_own_turtle1():
-    record = [dict(k='spawn', t=0.0, turtle='turtle1'), dict(k='kill', t=0.5, turtle='turtle1'),
-              dict(k='spawn', t=0.6, turtle='theo'), dict(k='pen', t=0.7, turtle='theo', off=True),
+    record = [dict(k='spawn', t=0.0, turtle='turtle1', x=5.5, y=5.5),
+              dict(k='kill', t=0.5, turtle='turtle1'),
+              dict(k='spawn', t=0.6, turtle='theo', x=4.0, y=5.0),
+              dict(k='pen', t=0.7, turtle='theo', off=True),
               dict(k='pen', t=1.5, turtle='theo', off=True)] + line(2, 4.0, 5.0, turtle='theo')
     d = drawing(record, [graph()], since=1.0, settle=2.0, until=9.0)
     assert (d.spawns, d.pens, d.pen_lifts, d.turtles) == (2, 2, 0, ['theo'])

@@ -43,7 +43,7 @@ def run_of(name, executables=(), drivers=()):
     return SimpleNamespace(name=name, build=OK, launch=Step(False, f'{name} launched'),
                            waited=OK, talker=OK, stuck='', waiting='', limit='', broken='',
                            events=[graph],
-                           record=[dict(k='spawn', t=0.0, turtle='turtle1')] + by,
+                           record=[dict(k='spawn', t=0.0, turtle='turtle1', x=5.5, y=5.5)] + by,
                            executables=list(executables), cpu_pct=None, limit_s=None,
                            script_until=None, watched_for=lambda: 0.0, log=[(f'roslaunch ({name})', f'{name} ran')])
 
