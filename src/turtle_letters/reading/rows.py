@@ -684,13 +684,27 @@ def _as_expected(row, letter, alone, shared):
     reads so as `letter` alone), and its own ink stands SMALL of the row
     or more: less is a neighbour's stroke, not a letter lent one (one
     stroke, the first leg of a U begun, cut three ways for USI, read as
-    the I beside a sliver)."""
+    the I beside a sliver). Nor where its own ink reads another letter,
+    or fits one best within CLEAN, better than the strokes lent make it
+    `letter`: they are its neighbour's, and cannot make it so (a duplex
+    I, fitting an I within 4% and a J as well, lent the end of the W
+    before it, fit a J within 5%; a cadet's J, a T within 10% alone, fit
+    an I within 12%)."""
     first = row.reading(alone, exact=letter)
     if first.letter == letter or row.share(alone) < SMALL or \
             row.reading(shared, letter).letter != letter:
         return first
     second = row.reading(shared, exact=letter)
-    return second if second.letter == letter else first
+    return first if second.letter != letter or _reads_another(first, letter, second.best.fit) \
+        else second
+
+
+def _reads_another(reading, letter, than):
+    """Whether `reading` is of another letter than `letter`, read so or
+    fitting best within CLEAN, and fits it within `than`."""
+    best = reading.best
+    return best is not None and best.letter != letter and best.fit <= than and \
+        (reading.letter == best.letter or best.fit <= CLEAN)
 
 
 def without_specks(ink):
