@@ -14,7 +14,7 @@ from typing import List, NamedTuple, Optional
 from ..isolation.files import safe_name, shown
 from ..reading.ocr import said as ocr_said
 from .observations import Drawing
-from .rubric import Grade, credited, drawn
+from .rubric import Grade, credited, drawn, nearest_only
 
 NOT_GRADED = 'not graded'
 CSV_COLUMNS = ['id', 'name', 'expected', 'drawn', 'score', 'max_score', 'verdict', 'reason']
@@ -180,7 +180,9 @@ def overlay(facts):
     letters = [(e, r.fits[e].strokes) if r.letter == e else
                (f'{e} (OCR)', r.fits[e].strokes if r.fits[e].fit <= r.fits[e].readable else [])
                for r, e in right if e in r.fits]
-    return letters + [(f'{r.letter}: not expected', r.best.strokes) for r in facts.readings
+    nearest = nearest_only(facts)
+    return letters + [(f'{r.letter}{" nearest" if r is nearest else ""}: not expected',
+                       r.best.strokes) for r in facts.readings
                       if r.letter and all(r is not c for c, _ in right)]
 
 
@@ -194,8 +196,11 @@ def caption(student_id, facts):
     also = ' and '.join(said for said, shown_too in (('teleports laid ink', jumped),
                                                      ('ink from before the drawing', before))
                         if shown_too)
+    nearest = nearest_only(facts)
+    read = f'no letter cleanly ({nearest.letter} the nearest)' if nearest else \
+        drawn(facts.readings) or 'no letter'
     return (f'{shown(student_id)}: expected {facts.expected or "?"}; its strokes read '
-            f'{drawn(facts.readings) or "no letter"}{ocr}\n'
+            f'{read}{ocr}\n'
             f'credited: {"".join(e for _, e in credited(facts)) or "none"}; left: the canvas as '
             f'turtlesim showed it{f" ({also} too)" if also else ""}; right: the '
             f'{"driven " if jumped else ""}ink{" of the drawing" if before else ""} enlarged, '

@@ -334,21 +334,28 @@ def _letter_read(facts, _):
     wrong = f'drew {text}, expected {facts.expected}'
     small_l = _small_l(text, facts.expected) + _cut_short(facts)
     if len(facts.expected) == 1:
-        return 0.0, (_loosely(read[0], facts.expected) if len(read) == 1 else wrong) + small_l
+        loose = nearest_only(facts)
+        return 0.0, (_nearest(loose, facts.expected) if loose else wrong) + small_l
     return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place{small_l}'
 
 
-def _loosely(reading, expected):
-    """Words for one letter read as another: 'drew' it where it reads within
-    CLEAN; else only what it lies nearest, for it reads no letter beyond
-    doubt (a real class's cursive L, its loops at both ends, lay nearest a
-    P tilted 48 degrees, 10% of its height off: it drew no P)."""
-    fit = reading.best.fit
-    if fit <= CLEAN:
-        return f'drew {reading.letter}, expected {expected}'
-    return (f'no letter reads cleanly, and {reading.letter} is the nearest, {100 * fit:.0f}% of '
-            f'its height off (within {100 * CLEAN:g}% a letter reads beyond doubt): '
-            f'expected {expected}')
+def nearest_only(facts):
+    """The one letter read where one other is expected, read past CLEAN:
+    it reads no letter beyond doubt, and is said to lie nearest that one,
+    not to draw it (a real class's cursive L, its loops at both ends, lay
+    nearest a P tilted 48 degrees, 10% of its height off: it drew no P).
+    None where there is none such."""
+    read = _shapes(facts.readings)
+    if len(facts.expected) == 1 and len(read) == 1 and \
+            read[0].letter not in (None, facts.expected) and read[0].best.fit > CLEAN:
+        return read[0]
+    return None
+
+
+def _nearest(reading, expected):
+    return (f'no letter reads cleanly, and {reading.letter} is the nearest, '
+            f'{100 * reading.best.fit:.0f}% of its height off (within {100 * CLEAN:g}% a '
+            f'letter reads beyond doubt): expected {expected}')
 
 
 def _cut_short(facts):

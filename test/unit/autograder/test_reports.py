@@ -94,6 +94,22 @@ def test_the_caption_names_no_letter_only_where_ocr_credits_none():
     assert 'credited: none' in said and 'named only' not in said
 
 
+def test_a_letter_read_only_loosely_as_another_is_shown_as_the_nearest_not_as_read():
+    """An L whose foot droops 0.3 m, 9% of its height off its nearest L,
+    graded against K: the row says no letter reads cleanly and L lies
+    nearest, and so do the picture's caption and the L's label (the
+    caption said its strokes read L). Within CLEAN, the L is read."""
+    drooping = [[(1.0, 3.0), (1.0, 1.0), (2.2, 0.7)]]
+    loose = Facts('K', drawing=Drawing(drooping, 1.0, 5.0, 200, []),
+                  readings=read_row(drooping, 'K'))
+    assert 'its strokes read no letter cleanly (L the nearest)' in reports.caption('ka', loose)
+    assert [label for label, _ in reports.overlay(loose)] == ['L nearest: not expected']
+    clean = [[(1.0, 3.0), (1.0, 1.0), (2.2, 0.9)]]
+    read = Facts('K', drawing=Drawing(clean, 1.0, 5.0, 200, []), readings=read_row(clean, 'K'))
+    assert 'its strokes read L\n' in reports.caption('ka', read)
+    assert [label for label, _ in reports.overlay(read)] == ['L: not expected']
+
+
 def test_the_caption_says_teleports_laid_ink_shown_on_the_canvas_only():
     """A class's M laid by pen-down teleports, the dot of its i driven: the
     canvas shows the M as turtlesim did, and the caption says why the ink
