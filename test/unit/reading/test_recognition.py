@@ -939,13 +939,14 @@ def test_a_row_read_whole_for_other_initials_earns_no_letter_the_row_read_blind_
 
 
 @pytest.mark.parametrize('family, drawn, other, aspect, gap, tilt', [
-    ('rowmand', 'RWI', 'RWJ', 1.251, -0.0292, -44.23), ('cadets', 'QJ', 'QI', 0.947, -0.023, 19.36)])
+    ('rowmand', 'RWI', 'RWJ', 1.251, -0.0292, -44.23),
+    ('cadets', 'QJ', 'QI', 0.947, -0.023, 19.36)])
 def test_a_letter_that_reads_another_alone_is_not_made_the_one_expected_by_a_neighbours_stroke(
         family, drawn, other, aspect, gap, tilt):
     """A letter cut in a row is read with the strokes it shares where only
     so it reads as expected. A duplex I fits an I and a J alike, within 4%
     of its height; lent the end of the W before it, it fit a J within 5%,
-    and a cadet's J, alone a T within 10%, lent the Q's tail, an I within
+    and a cadet's J, alone a T within 10%, lent the Q's ink beside it, an I within
     12% (the recognition benchmark's rows 2242 and 2231, each credited the
     letter it was graded against). A neighbour's stroke makes no letter of
     ink that reads as another as well without it."""
