@@ -22,6 +22,7 @@ RUN_TURN = 10       # degrees a line's last straight run strays from its last he
 OVERSHOOT = 1 / 3   # share of that run that may stick out past the rest of the ink: driven on
 LONG_RUN = 0.5      # ... where the run is this share of the rest's larger side long, at least
 HOME_NEAR = 0.01    # m: a line begun this near where a turtle appeared begins there
+LEAD_IN = 0.05      # share of the ink's height a lead-in is long, at least: less is a nub
 
 
 def box(points):
@@ -177,14 +178,19 @@ def led_in(ink, homes):
     where the line turns on past it: the way a turtle drove, its pen
     down, to where its letter begins (a real class's B, drawn by
     `rostopic pub` alone, began with a 4 m line from turtlesim's centre).
-    None where no line begins so."""
+    None where no line begins so, or its run is under LEAD_IN of the
+    ink's height: the first steps of a curve begun there (a real R's
+    bowl, 3% of the height: reading the ink again without them cost a
+    second and found nothing)."""
     trimmed, changed = [list(line) for line in ink], False
+    height = box([p for line in ink for p in line])[3] if any(ink) else 0.0
     for k, line in enumerate(ink):
         if not line or not any(math.dist(line[0], home) <= HOME_NEAR for home in homes):
             continue
         back = _last_run(line[::-1])
         end = None if back is None else len(line) - 1 - back   # where the first run ends
-        if end is not None and 0 < end < len(line) - 1:
+        if end is not None and 0 < end < len(line) - 1 and \
+                length([line[:end + 1]]) >= LEAD_IN * height:
             trimmed[k], changed = list(line[end:]), True
     return trimmed if changed else None
 

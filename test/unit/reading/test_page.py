@@ -325,3 +325,8 @@ def test_only_a_straight_run_from_where_a_turtle_appeared_into_more_ink_is_a_lea
     assert led_in([into_l], [HOME]) == [into_l[round(2 / 0.016):]]
     assert led_in([into_l], [(1.0, 1.0)]) is None       # begun elsewhere: no turtle appeared there
     assert led_in([driven(HOME, [(-2, 0)])], [HOME]) is None    # all one run: a stroke
+    # an R's bowl begun there, and its stem: the bowl's first steps run straight 9 cm of 4 m
+    bowl = [(HOME[0] + 0.5 * math.sin(k * math.tau / 200),
+             HOME[1] + 0.5 - 0.5 * math.cos(k * math.tau / 200)) for k in range(201)]
+    stem = [(HOME[0], HOME[1] - 3 * k / 100) for k in range(1, 101)]
+    assert led_in([bowl + stem], [HOME]) is None
