@@ -180,8 +180,8 @@ def led_in(ink, homes):
     `rostopic pub` alone, began with a 4 m line from turtlesim's centre).
     None where no line begins so, or its run is under LEAD_IN of the
     ink's height: the first steps of a curve begun there (a real R's
-    bowl, 3% of the height: reading the ink again without them cost a
-    second and found nothing)."""
+    bowl, 3% of the height: reading the ink again without them cost
+    0.7 s and found nothing)."""
     trimmed, changed = [list(line) for line in ink], False
     height = box([p for line in ink for p in line])[3] if any(ink) else 0.0
     for k, line in enumerate(ink):
