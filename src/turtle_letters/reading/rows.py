@@ -46,6 +46,7 @@ FAR_OFF = 30        # degrees off level past which, on a tie, neither way up of 
 CLEAR_LINES = 40    # lines of a row past which its letters are not sought clear of each other
 CLEAR_POINTS = 400  # ... and the points of a line compared, at most
 RIVALS = 3          # the letters fitting a loose letter's place next best tried in its stead
+NEAR_CUT = 0.15     # share of an even share within which two cuts bound the same ink
 NUB = 0.05          # a piece of a line a cut severs, shorter than this share of the height: no one's
 # Degrees off its row's level (levels) a letter of a row is tried at, at most, before
 # the finer steps: a row's letters lean alike, and a part of a row fit a letter of
@@ -470,16 +471,19 @@ def read_row(ink, expected='') -> List[Reading]:
 def _unobjected(level, readings, expected):
     """`readings` of a row read whole as `expected`, a letter read past
     CLEAN dropped where the row read blind as it lay when read (`level`:
-    _blind) reads a letter in every place, and another plainly in its place
+    _blind) reads a letter in every place, or where it cut that place as
+    the roster's cut did (_cut_alike), and another plainly in its place
     (recognition.plainly_other; read blind at its likelier slope instead, a
     zigzag M run into its F, read level as NF, was an M and a C 20 degrees
     off, and the N, the M's first three legs, stood):
     a cut sought for a letter that is not there may find ink that fits it
     loosely (a cadet's BP cut for EP read its B as an E within 8% of its
-    height; cut blind, BP within 2%). Only a row read whole blind objects:
-    a blind cut through a letter leaves pieces that read as other letters
-    (the recognition benchmark's BN, its B cut blind an E within 3%, and a
-    piece no letter; objecting so lost 5 rows read right for 2 wrong credits).
+    height; cut blind, BP within 2%; a duplex D cut for YOX with the X's
+    tips an O within 12%, blind a D within 5%, the X cut short no letter).
+    Nowhere else does a row read blind in part object: a blind cut through
+    a letter leaves pieces that read as other letters (the recognition
+    benchmark's BN, its B cut blind an E within 3%, and a piece no letter;
+    objecting so lost 5 rows read right for 2 wrong credits).
     Nor does one that another letter, cut for in its place, reads cleanly
     (_bettered). Where the effort is spent, none past CLEAN stands."""
     loose = [k for k, (r, e) in enumerate(zip(readings, expected))
@@ -493,11 +497,34 @@ def _unobjected(level, readings, expected):
         blind = None        # not checked: not credited
 
     def denied(k):      # the costly check (_bettered) last, where the others let it stand
-        return blind is None or (all(r.letter for r in blind) and
-                                 plainly_other(blind[k], expected[k])) or \
+        return blind is None or (plainly_other(blind[k], expected[k]) and (
+            all(r.letter for r in blind) or _cut_alike(row, expected, k, readings[k]))) or \
             _bettered(row, readings, expected, k)
     return [Reading(None, r.best, r.fits) if k in loose and denied(k) else r
             for k, r in enumerate(readings)]
+
+
+def _cut_alike(row, expected, k, reading):
+    """Whether the row cut blind (_blind) bounds place k within NEAR_CUT of
+    a share of where the cut for `expected` that read `reading` there does
+    (looking ahead, else not): the blind reading there is of the same ink,
+    not of a piece cut through it (a rowmant R, read where the row was cut
+    looking ahead, cut blind through its bowl left its stem an I)."""
+    count = len(expected)
+    if len(apart(row.ink)) >= count:
+        return True
+    try:
+        blind = cut(row, ANY * count, ahead=False)
+        for ahead in (True, False):
+            cuts = cut(row, expected, ahead)
+            place = _as_expected(row, expected[k], *row.letters(cuts)[k])
+            if place.letter == reading.letter and place.best.fit == reading.best.fit:
+                edges = slice(max(0, k - 1), k + 1)
+                return all(abs(a - b) <= NEAR_CUT * row.width / count
+                           for a, b in zip(cuts[edges], blind[edges]))
+    except Unfinished:
+        return True     # not checked: not credited, as in _unobjected
+    return False
 
 
 def _bettered(row, readings, expected, k):

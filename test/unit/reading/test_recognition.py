@@ -938,6 +938,19 @@ def test_a_row_read_whole_for_other_initials_earns_no_letter_the_row_read_blind_
     assert ''.join(r.letter or '?' for r in read_row(ink, 'BP')) == 'BP'
 
 
+def test_a_loose_letter_is_denied_by_a_blind_cut_through_the_same_place():
+    """A duplex Y, D and X touching, 1.47 times as wide, tilted 8 degrees
+    (the recognition benchmark's row 2323): cut for YOX, the D's place,
+    the tips of the X's strokes with it, fit an O within 12% of its
+    height, credited. Cut blind at the same places, within a tenth of a
+    share, that ink is a D within 5%, though the X beside it, cut short,
+    reads no letter: a row read blind in part still objects where it cut
+    where the roster's cut did."""
+    ink = turned(touching('rowmand', 'YDX', 1.466, -0.0267), -8.0, (0.0, 0.0))
+    read = ''.join(r.letter or '?' for r in read_row(ink, 'YOX'))
+    assert read[1] != 'O', read
+
+
 @pytest.mark.parametrize('family, drawn, other, aspect, gap, tilt', [
     ('rowmand', 'RWI', 'RWJ', 1.251, -0.0292, -44.23),
     ('cadets', 'QJ', 'QI', 0.947, -0.023, 19.36)])
