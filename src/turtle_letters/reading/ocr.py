@@ -316,32 +316,46 @@ def _letter_by_letter(ink, expected, needed):
 
 
 def told_apart(ink, readings):
-    """The strokes' `readings` of one letter (rows.read_row), its letter
-    dropped where another letter fits within CLEAN too and OCR reads that
-    other one, as the ink lies (CONFIDENT or more) or turned back by the
-    tilt the strokes fit it at (CONFIDENT_TURNED): where the strokes see two
+    """The strokes' `readings` (rows.read_row), a letter dropped where
+    another letter fits its place within CLEAN too and OCR reads the ink
+    with that other one there (_reads_rival): where the strokes see two
     letters plainly, OCR tells them apart whichever the roster says
     (DejaVu Serif Bold's J drawn round its edge is an I within 2.2% of its
     height and a J within 6.1% to the strokes, a J 84 to 95% sure to OCR
-    level; tilted 38 degrees, a J to OCR only turned back). Not turned
-    for the letter's twin (recognition.TWINS): OCR takes a Z turned a
-    quarter for an N."""
-    if len(readings) != 1 or readings[0].letter is None or readings[0].best.fit > CLEAN:
-        return readings
-    reading = readings[0]
-    rivals = sorted(c for c, f in reading.fits.items() if c != reading.letter and f.fit <= CLEAN)
-    if not rivals:
-        return readings
+    level; tilted 38 degrees, a J to OCR only turned back; beside a C, its
+    middle line an I within 4.1%, a T, a J, a B and an F within 7%, and
+    the row a CJ to OCR)."""
+    told = list(readings)
+    for k, reading in enumerate(readings):
+        if reading.letter is None or reading.best.fit > CLEAN:
+            continue
+        rivals = sorted(c for c, f in reading.fits.items()
+                        if c != reading.letter and f.fit <= CLEAN)
+        if any(_reads_rival(ink, readings, k, rival) for rival in rivals):
+            told[k] = Reading(None, reading.best, reading.fits)
+    return told
+
+
+def _reads_rival(ink, readings, k, rival):
+    """Whether OCR reads `ink` as the strokes' letters with `rival` in place
+    k (a row with a letter unread is not read), as it lies (CONFIDENT or
+    more) or turned back by the tilt the strokes fit the rival at
+    (CONFIDENT_TURNED). Not turned for the letter's twin
+    (recognition.TWINS): OCR takes a Z turned a quarter for an N."""
+    letters = [r.letter for r in readings]
+    if None in letters:
+        return False
+    text = ''.join(letters[:k] + [rival] + letters[k + 1:])
+    reading = readings[k]
     x, y, w, h = box([p for line in ink for p in line])
     level = thinned(ink, h / 200)
-    for rival in rivals:
-        tilt = reading.fits[rival].tilt if rival != TWINS.get(reading.letter) else 0
-        for turn in ((0, tilt) if tilt else (0,)):
-            view = turned(level, -turn, (x + w / 2, y + h / 2)) if turn else level
-            text, confidence = _read_picture(view, rival, _needed(turn))
-            if text == rival and confidence >= _needed(turn):
-                return [Reading(None, reading.best, reading.fits)]
-    return readings
+    tilt = reading.fits[rival].tilt if rival != TWINS.get(reading.letter) else 0
+    for turn in ((0, tilt) if tilt else (0,)):
+        view = turned(level, -turn, (x + w / 2, y + h / 2)) if turn else level
+        read, confidence = _read_picture(view, text, _needed(turn))
+        if read == text and confidence >= _needed(turn):
+            return True
+    return False
 
 
 def supports(reading: OcrReading, expected: str, strokes=()) -> bool:

@@ -168,6 +168,26 @@ def test_ocr_tells_apart_two_letters_the_strokes_see_cleanly_standing_the_other_
     assert told_apart(ink, strokes)[0].letter is None
 
 
+def test_ocr_tells_apart_two_letters_the_strokes_see_cleanly_in_a_row():
+    """DejaVu Serif Bold's C and J drawn round their edges side by side,
+    2.3 m, tilted 11 degrees (the recognition benchmark's row 2041): the
+    J's middle line, its thin hook lost, is an I to the strokes within
+    CLEAN, and a J within CLEAN too. Graded as CI, the I was credited;
+    OCR reads the row as CJ, and the strokes' I is dropped. Graded as CJ,
+    the J still reads."""
+    from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
+    from turtle_letters.reading.forms import CLEAN
+    from turtle_letters.reading.rows import read_row
+    from support.glyph_rows import side_by_side
+    glyphs = outline_glyphs(DEJAVU_BOLD[1])
+    ink = as_the_benchmark_draws(side_by_side([glyphs['C'], glyphs['J']], 1.0068, 0.0317),
+                                 2.313, 10.73, 0.0279)
+    as_ci = read_row(ink, 'CI')
+    assert [r.letter for r in as_ci] == ['C', 'I'] and as_ci[1].fits['J'].fit <= CLEAN
+    assert [r.letter for r in told_apart(ink, as_ci)] == ['C', None]
+    assert [r.letter for r in told_apart(ink, read_row(ink, 'CJ'))] == ['C', 'J']
+
+
 def test_a_letter_another_fits_cleanly_too_is_kept_where_ocr_reads_that_one_only_turned():
     """A roman duplex Z, 1.93 times as wide, 9.3 m, tilted 41 degrees: to
     the strokes a Z and an N, both within CLEAN; turned back 30 degrees,
