@@ -951,6 +951,19 @@ def test_a_loose_letter_is_denied_by_a_blind_cut_through_the_same_place():
     assert read[1] != 'O', read
 
 
+def test_a_piece_of_a_loop_that_reads_whole_as_a_letter_is_no_other_letter():
+    """A simplex B, L and O touching, 0.67 times as wide, tilted 3 degrees
+    (the recognition benchmark's row 2160): its O is a closed line of its
+    own, an O within 3% of its height alone. Cut for BLI, the cut through
+    the O left its right side an I within 6%, credited. A loop drawn
+    whole is one letter to a TA: a piece of it is no other letter."""
+    ink = turned(touching('rowmans', 'BLO', 0.6687, -0.018), 3.2, (0.0, 0.0))
+    o = [line for line in ink if math.dist(line[0], line[-1]) < 0.01][0]
+    assert read([o]).letter == 'O' and read([o]).best.fit <= 0.03
+    read_as_bli = ''.join(r.letter or '?' for r in read_row(ink, 'BLI'))
+    assert read_as_bli[2] != 'I', read_as_bli
+
+
 @pytest.mark.parametrize('family, drawn, other, aspect, gap, tilt', [
     ('rowmand', 'RWI', 'RWJ', 1.251, -0.0292, -44.23),
     ('cadets', 'QJ', 'QI', 0.947, -0.023, 19.36)])
