@@ -412,6 +412,41 @@ def test_a_turned_reading_another_of_ocrs_readings_doubts_is_not_credited(
         assert supports(read_text(ink, letter), letter)
 
 
+def test_a_level_reading_the_letter_stood_upright_reads_otherwise_is_not_credited():
+    """DejaVu Serif Bold's Z drawn round its edge, 0.85 as wide, 8.7 m,
+    tilted 30 degrees (the recognition benchmark's drawing 979): as it
+    lies, OCR reads an L 90% sure or more, and the strokes read no letter.
+    Turned back by its squarest turn, 30 degrees, where it stands upright,
+    OCR reads a Z in two readings 80% sure or more. Graded as an L, nothing
+    is credited, and the row says both readings."""
+    ink = stretched_outline(1, 'Z', 0.8517, 8.687, 30.23, 0.0119)
+    reading = read_text(ink, 'L')
+    assert (reading.text, reading.tilt) == ('L', 0.0) and reading.confidence >= 90, reading
+    assert reading.rival is not None and reading.rival.text == 'Z', reading
+    assert abs(reading.rival.tilt - 30) <= 2.5
+    assert not supports(reading, 'L') and said(reading).endswith('does not tell them apart')
+
+
+def test_an_o_ocr_reads_where_the_strokes_fit_a_q_best_is_not_credited():
+    """DejaVu Sans Bold's G, Q and B drawn round their edges side by side,
+    1.76 times as wide, tilted 20 degrees (the recognition benchmark's row
+    2022): a person sees the Q's tail. Turned back 20 degrees, OCR reads
+    GOB 94% sure; the strokes read no letter, but fit the middle one best
+    as a Q, within 12% of its height, where an O fits within 15%. Graded
+    as GOB, OCR's O is not credited; the row says what each reader saw."""
+    from turtle_letters.letters.outlines import DEJAVU_BOLD, outline_glyphs
+    from turtle_letters.reading.rows import read_row
+    from support.glyph_rows import side_by_side
+    glyphs = outline_glyphs(DEJAVU_BOLD[0])
+    ink = as_the_benchmark_draws(side_by_side([glyphs[c] for c in 'GQB'], 1.7632, -0.0257),
+                                 2.623, 20.18, 0.0172)
+    reading, strokes = read_text(ink, 'GOB'), told_apart(ink, read_row(ink, 'GOB'))
+    assert reading.text == 'GOB' and reading.confidence >= 90, reading
+    best = strokes[1].best
+    assert best.letter == 'Q' and best.fit < strokes[1].fits['O'].fit
+    assert not supports(reading, 'GOB', strokes)
+
+
 def test_a_level_line_beside_specks_is_no_row_to_cut_and_raises_nothing():
     """Half a U's stroke, then 20 m driven dead level below it (a writer
     that never ends, begun again): beside the line, the stroke is a speck,
