@@ -9,10 +9,11 @@ unless it reads confidently as another text as it lies, turned back by
 each of TILTS and by the turn that stands it squarest, then narrowed (a
 letter drawn twice as wide is no print letter to Tesseract); a reading
 of the expected text at CONFIDENT or more (CONFIDENT_TURNED turned or
-narrowed) is kept, with any reading of another view that leaves it in doubt
-(_rival); else the expected text where its readings vote for it
-(_voted); else the reading level. (Turned, a J read as an S at 86%: what
-reads as something else level is not turned until it reads as hoped.)
+narrowed) is kept, with any reading of another view that leaves it in
+doubt (_rival; read level, its reading stood upright, _upright_rival);
+else the expected text where its readings vote for it (_voted); else the
+reading level. (Turned, a J read as an S at 86%: what reads as something
+else level is not turned until it reads as hoped.)
 """
 import collections
 import os
@@ -225,9 +226,9 @@ def _upright_rival(reading, ink, centre):
     its squarest turn, and a person reads it there. (A DejaVu Serif Bold Z
     drawn round its edge, tilted 30 degrees, read level is an L 91% sure;
     turned back 30 degrees, a Z 87 and 83% sure. Of the recognition
-    benchmark's 426 drawings that OCR reads level as their own text, one
-    is doubted so, a DejaVu Sans Bold YVF read YVE upright: its strokes
-    read it.)"""
+    benchmark's 426 drawings that OCR reads level, as drawn, as their own
+    text, one is doubted so, a DejaVu Sans Bold YVF read YVE upright: its
+    strokes read it.)"""
     square = squarest_turn(ink)
     if abs(square) <= NEAR:
         return None
