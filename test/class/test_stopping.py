@@ -107,7 +107,8 @@ def test_in_a_terminal_a_bar_shows_the_class_going_and_ctrl_c_stops_it(tmp_path)
     before = sandbox_processes()
     args = ' '.join(a_class(tmp_path, 3)).replace('--jobs 2', '--jobs 1')
     terminal = Terminal(f'stty -g > before; rosrun turtle_letters grade_class.py {args}; '
-                        f'echo "exit $?" > code; stty -g > after', cwd=True)
+                        f'echo "exit $?" > code; stty -g > after; echo "SETTINGS" "SAVED"',
+                        cwd=True)
     try:
         assert terminal.wait_for('0/3 students', 60), terminal.screen()
         assert terminal.wait_for('grading s1', 30), terminal.screen()
@@ -117,10 +118,9 @@ def test_in_a_terminal_a_bar_shows_the_class_going_and_ctrl_c_stops_it(tmp_path)
         assert '<' in screen.split('1/3 students')[1].split('\n')[0]      # [elapsed<left]
         terminal.send_keys('C-c')
         assert terminal.wait_for('SIGINT: stopping', 30), terminal.screen()
-        deadline = time.monotonic() + STOPS_WITHIN
-        while not os.path.exists(os.path.join(terminal.dir, 'after')) and \
-                time.monotonic() < deadline:
-            time.sleep(0.2)
+        # the echo comes after stty has written: the file alone exists, empty,
+        # from the moment the shell opens it (an empty read failed CI once)
+        assert terminal.wait_for('SETTINGS SAVED', STOPS_WITHIN), terminal.screen()
         assert terminal.read('code') == 'exit 130', terminal.screen()
         assert terminal.read('after') == terminal.read('before')
     finally:
