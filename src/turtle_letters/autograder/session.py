@@ -414,9 +414,8 @@ def _with_python(names):
     if not names:
         return ''
     them = 'them' if len(names) > 1 else 'it'
-    return (f'; {", ".join(names)}: no #! line exec can follow (a path from /, its line '
-            f'ending without a carriage return: #!/usr/bin/env python3), so rosrun cannot '
-            f'start {them}: the grader ran {them} with python3, as a TA would')
+    return (f'; {", ".join(names)}: no #! line exec can follow (#!/usr/bin/env python3 '
+            f'is one), so the grader ran {them} with python3, as a TA would')
 
 
 class Refused:

@@ -476,18 +476,26 @@ def _waits(line):
 
 def unstartable_python(folder, depth=3):
     """The names of the executable .py files in a package's folders that
-    exec cannot start as handed in: no #! line, or one that names no program
+    exec cannot start as handed in: no #! line, one that names no program
     by its path (`#!usr/bin/env python`, or a line ending in a carriage
-    return, written on Windows). A TA runs them with python3."""
+    return, written on Windows), or one that names a program this machine
+    lacks (`#!/usr/bin/python`, which Ubuntu 20.04 has only where
+    python-is-python3 is installed; a Mac's /opt/homebrew/bin/python3).
+    A TA runs them with python3."""
     files = _executable(_plain_files(folder, depth, lambda found: False))
     return sorted(entry.name for entry in files
                   if entry.name.endswith('.py') and not _startable(entry.path))[:MAX_NODES]
 
 
 def _startable(path):
-    """Whether a script's first line is a #! that exec can follow: a path from /, no CR."""
+    """Whether a script's first line is a #! that exec can follow: a path from /,
+    of a program this machine has (the sandbox sees its system), no CR."""
     first = (read_plain(path, 200) or b'').split(b'\n')[0]
-    return re.match(rb'#!\s*/', first) is not None and not first.endswith(b'\r')
+    program = re.match(rb'#!\s*(/\S*)', first)
+    if program is None or first.endswith(b'\r'):
+        return False
+    path = os.fsdecode(program.group(1))
+    return os.path.isfile(path) and os.access(path, os.X_OK)
 
 
 def _starts_with_shebang(path):

@@ -197,9 +197,8 @@ def test_the_scripts_run_with_python3_are_named_in_the_row_with_why():
     run.generated, run.unstartable = 'keys.py, spawn.py', ['spawn.py']
     run.launch = Step(True, 'turtlesim up, /keys0 listening on /chatter, in 2.0 s')
     fell_short, step = started_instead(run)
-    assert fell_short == '; spawn.py: no #! line exec can follow (a path from /, its line ' \
-                         'ending without a carriage return: #!/usr/bin/env python3), so ' \
-                         'rosrun cannot start it: the grader ran it with python3, as a TA would'
+    assert fell_short == '; spawn.py: no #! line exec can follow (#!/usr/bin/env python3 ' \
+                         'is one), so the grader ran it with python3, as a TA would'
     assert step.says == 'no launch file: the grader started its executables (keys.py, ' \
                         'spawn.py) as a launch file would' + fell_short
 

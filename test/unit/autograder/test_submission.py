@@ -289,6 +289,22 @@ def test_a_rospy_script_handed_in_without_its_line_or_mode_is_run_with_python3(t
     assert submission.scripts(folder) == ['draw.py']
 
 
+def test_an_executable_script_whose_interpreter_this_machine_lacks_is_run_with_python3(
+        tmp_path):
+    """A #! line exec can follow names a program this machine has: a real
+    class's `#!/usr/bin/python` (absent from Debian 12 and from a Noetic
+    machine without python-is-python3) and a Mac's Homebrew python3 name
+    none, and such scripts are run with python3; `#!/usr/bin/env python`
+    (python is a stand-in in the sandbox) and a folder named by #! are
+    told apart from them."""
+    make(tmp_path, {'lab/scripts/mac.py': '#!/opt/homebrew/bin/python3\nimport rospy\n',
+                    'lab/scripts/env.py': '#!/usr/bin/env python\nimport rospy\n',
+                    'lab/scripts/folder.py': '#!/usr/bin\nimport rospy\n'})
+    for name in ('mac.py', 'env.py', 'folder.py'):
+        os.chmod(tmp_path / 'lab' / 'scripts' / name, 0o755)
+    assert submission.unstartable_python(str(tmp_path / 'lab')) == ['folder.py', 'mac.py']
+
+
 def test_a_rostopic_pub_that_waits_is_found_in_the_scripts_started(tmp_path):
     """waiting_publishers: a shell script's first `rostopic pub` with no -1,
     -r or -f (a latched -l typed for -1) waits to be stopped; a backgrounded
