@@ -35,8 +35,6 @@ def draw(path_png, strokes, paths, colours, half_box=0.01):
     drawn in colours[label] (r, g, b); a box shows +-half_box m around a vertex."""
     application()
     colours = {label: QColor(*rgb) for label, rgb in colours.items()}
-    inset_scale = INSET_SIZE / (2 * half_box)            # px per m in the boxes
-    bar = 10 ** math.floor(math.log10(half_box / 2))     # m: the scale bar's length
     vertices = [v for s in strokes for v in s]
     xs, ys = [v[0] for v in vertices], [v[1] for v in vertices]
     margin = 0.4
@@ -54,11 +52,6 @@ def draw(path_png, strokes, paths, colours, half_box=0.01):
     painter.setRenderHint(QPainter.Antialiasing)
     painter.setFont(QFont('Sans', 9))
 
-    def polyline(points, to_px, pen):
-        painter.setPen(pen)
-        for a, b in zip(points, points[1:]):
-            painter.drawLine(to_px(a), to_px(b))
-
     def overview(p):
         return QPointF(10 + (p[0] - x0) * MAIN_SCALE, 40 + (y1 - p[1]) * MAIN_SCALE)
 
@@ -66,51 +59,69 @@ def draw(path_png, strokes, paths, colours, half_box=0.01):
     painter.drawText(10, 20, f'Ideal strokes (grey) and recorded paths; boxes: '
                              f'+-{half_box * 1000:g} mm around each vertex')
     for stroke in strokes:
-        polyline(stroke, overview, QPen(QColor(200, 200, 200), 6))
+        _polyline(painter, stroke, overview, QPen(QColor(200, 200, 200), 6))
     for key, runs in paths.items():
         for run in runs:
-            polyline(run, overview, QPen(colours[key], 1))
+            _polyline(painter, run, overview, QPen(colours[key], 1))
+    for i, vertex in enumerate(vertices):
+        corner = (main_w + 20 + (i % columns) * (INSET_SIZE + 10),
+                  40 + (i // columns) * (INSET_SIZE + 30))
+        _inset(painter, corner, i, vertex, strokes, paths, colours, half_box)
+    _legend(painter, height - 15, colours, paths)
+    painter.end()
+    image.save(path_png, 'PNG')
 
-    for i, (vx, vy) in enumerate(vertices):
-        left = main_w + 20 + (i % columns) * (INSET_SIZE + 10)
-        top = 40 + (i // columns) * (INSET_SIZE + 30)
-        box = QRectF(left, top, INSET_SIZE, INSET_SIZE)
-        painter.setClipRect(box)
-        painter.fillRect(box, QColor(250, 250, 250))
 
-        def inset(p, vx=vx, vy=vy, left=left, top=top):
-            return QPointF(left + INSET_SIZE / 2 + (p[0] - vx) * inset_scale,
-                           top + INSET_SIZE / 2 - (p[1] - vy) * inset_scale)
-        for stroke in strokes:
-            polyline(stroke, inset, QPen(QColor(200, 200, 200), 3))
-        for key, runs in paths.items():
-            for run in runs:
-                near = [p for p in run
-                        if abs(p[0] - vx) < 3 * half_box and abs(p[1] - vy) < 3 * half_box]
-                polyline(near, inset, QPen(colours[key], 1.5))
-                painter.setBrush(colours[key])
-                for p in near:
-                    painter.drawEllipse(inset(p), 1.5, 1.5)
-        painter.setClipping(False)
-        painter.setBrush(Qt.NoBrush)
-        painter.setPen(QColor('black'))
-        painter.drawRect(box)
-        painter.drawLine(QPointF(left + 10, top + INSET_SIZE - 10),
-                         QPointF(left + 10 + bar * inset_scale, top + INSET_SIZE - 10))
-        painter.drawText(int(left + 10), int(top + INSET_SIZE - 14), f'{bar * 1000:g} mm')
-        painter.drawText(int(left), int(top + INSET_SIZE + 16),
-                         f'vertex {i + 1} ({vx:.3f}, {vy:.3f})')
+def _polyline(painter, points, to_px, pen):
+    painter.setPen(pen)
+    for a, b in zip(points, points[1:]):
+        painter.drawLine(to_px(a), to_px(b))
 
-    legend_y = height - 15
+
+def _inset(painter, corner, i, vertex, strokes, paths, colours, half_box):
+    """The box of vertex i, its top left at `corner` (px): the ideal strokes
+    and the paths within 3 half_box of it, enlarged, with a scale bar."""
+    left, top = corner
+    vx, vy = vertex
+    scale = INSET_SIZE / (2 * half_box)                  # px per m in the boxes
+    bar = 10 ** math.floor(math.log10(half_box / 2))     # m: the scale bar's length
+    box = QRectF(left, top, INSET_SIZE, INSET_SIZE)
+    painter.setClipRect(box)
+    painter.fillRect(box, QColor(250, 250, 250))
+
+    def inset(p):
+        return QPointF(left + INSET_SIZE / 2 + (p[0] - vx) * scale,
+                       top + INSET_SIZE / 2 - (p[1] - vy) * scale)
+    for stroke in strokes:
+        _polyline(painter, stroke, inset, QPen(QColor(200, 200, 200), 3))
+    for key, runs in paths.items():
+        for run in runs:
+            near = [p for p in run
+                    if abs(p[0] - vx) < 3 * half_box and abs(p[1] - vy) < 3 * half_box]
+            _polyline(painter, near, inset, QPen(colours[key], 1.5))
+            painter.setBrush(colours[key])
+            for p in near:
+                painter.drawEllipse(inset(p), 1.5, 1.5)
+    painter.setClipping(False)
+    painter.setBrush(Qt.NoBrush)
+    painter.setPen(QColor('black'))
+    painter.drawRect(box)
+    painter.drawLine(QPointF(left + 10, top + INSET_SIZE - 10),
+                     QPointF(left + 10 + bar * scale, top + INSET_SIZE - 10))
+    painter.drawText(int(left + 10), int(top + INSET_SIZE - 14), f'{bar * 1000:g} mm')
+    painter.drawText(int(left), int(top + INSET_SIZE + 16),
+                     f'vertex {i + 1} ({vx:.3f}, {vy:.3f})')
+
+
+def _legend(painter, y, colours, paths):
+    """Each path's colour and label, along the foot of the picture at `y` (px)."""
     x = 10
     for key in paths:
         painter.setPen(QPen(colours[key], 3))
-        painter.drawLine(x, legend_y - 4, x + 20, legend_y - 4)
+        painter.drawLine(x, y - 4, x + 20, y - 4)
         painter.setPen(QColor('black'))
-        painter.drawText(x + 25, legend_y, key)
+        painter.drawText(x + 25, y, key)
         x += 140
-    painter.end()
-    image.save(path_png, 'PNG')
 
 
 CANVAS_SCALE = 120.0        # px per m
