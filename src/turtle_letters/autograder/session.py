@@ -21,14 +21,15 @@ from .failures import RLEXCEPTION, sources, talker_failure, why_not_launched, wh
 from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
-                         nodes, scripts, started_packages, unbuilt_scripts, unstartable_python,
+                         nodes, scripts, started_packages, unbuilt_scripts, unstartable,
                          waiting_publishers, wrap)
 from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
                     terminal_stand_ins)
 
 POLL = 0.1                  # s between looks at what the watcher saw
 BASH = ' launch-prefix="bash"'  # a shell script without #! is run with bash, as a TA types it
-PYTHON = ' launch-prefix="python3"'     # ... and a Python script exec cannot start, with python3
+# ... and a script exec cannot start, with the program its kind runs with (unstartable)
+PREFIXES = {'bash': BASH, 'python3': ' launch-prefix="python3"'}
 REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch file it cannot start
 # catkin's words for an include folder a package names and lacks (catkin_package.cmake)
 MISSING_INCLUDE = re.compile(r"catkin_package\(\) include dir '([^']+)' does not exist "
@@ -61,7 +62,7 @@ class Run:
         self.limit = ''         # the sandbox's limit the submission reached, in words
         self.generated = ''     # the executables the grader started, for want of a launch file
         self.executables = []   # ... each by name
-        self.unstartable = []   # ... those exec could not start (no usable #!): run with python3
+        self.unstartable = {}   # ... those exec could not start (no usable #!): {name: run with}
         self.letters = letters  # the roster's: typed where P drew nothing and a prompt waits
         self.passed_over = None  # why the package's launch file was not run, if it was not
         self.fell_short = ''    # '; why': the lab of the executables the grader started fell short
@@ -283,7 +284,7 @@ def _refused(result, box):
     started = {kind for _, kind in nodes(os.path.join(copied, result.package.launch),
                                          {result.package.name: copied})}
     return result.launch.says.startswith((REFUSAL, RLEXCEPTION)) or \
-        bool(started & set(unstartable_python(copied)))
+        bool(started & set(unstartable(copied)))
 
 
 def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
@@ -322,12 +323,13 @@ def generated_launch(box, package, names):
     """The launch file the grader writes where a package has none that
     starts its nodes: each executable of `names` started as rosrun would,
     all in roslaunch's terminal (a shell script without #!, with bash; a
-    Python script whose #! exec cannot follow, with python3). Its path.
+    script whose #! exec cannot follow, with python3 or bash: unstartable).
+    Its path.
     (The grader runs turtlesim itself: a launch file of turtlesim and
     its teleop alone adds nothing, and a real class's failed to parse.)"""
-    shell, python = set(bare_shell(_copied(box, package))), set(unstartable_python(
-        _copied(box, package)))
-    prefix = {**{name: BASH for name in shell}, **{name: PYTHON for name in python}}
+    prefix = {name: BASH for name in bare_shell(_copied(box, package))}
+    prefix.update((name, PREFIXES[program])
+                  for name, program in unstartable(_copied(box, package)).items())
     lines = [f'  <node pkg={quoteattr(package.name)} type={quoteattr(name)} '
              f'name="{_node(name, i)}" output="screen"{prefix.get(name, "")}/>\n'
              for i, name in enumerate(names)]
@@ -364,7 +366,8 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
     else:
         launch = [generated_launch(box, package, names)]
         result.executables, result.generated = names, ', '.join(names) or 'none'
-        result.unstartable = sorted(set(names) & set(unstartable_python(_copied(box, package))))
+        result.unstartable = {name: program for name, program in
+                              unstartable(_copied(box, package)).items() if name in names}
         result.passed_over = package.launch and (f'{package.launch} starts nodes of '
                                                  f'{", ".join(started) or "no package"} only, '
                                                  f'none of {package.name}')
@@ -395,13 +398,13 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
 def started_instead(run):
     """('; what was done and why the lab fell short' or '', the launch step)
     of a `run` of the executables the grader started for want of a launch
-    file that starts them: how it came to, the scripts run with python3
-    (_with_python), and what the lab said where it did not come up (a node
+    file that starts them: how it came to, the scripts run with python3 or
+    bash (_run_with), and what the lab said where it did not come up (a node
     that died is the student's to mend, whoever started it). The launch
     file the grader writes starts no turtlesim: the grader runs its own."""
     fell_short = '' if run.launch.ok or run.launch.says == NO_TURTLESIM else \
         f'; {run.launch.says}'
-    fell_short = _with_python(run.unstartable) + fell_short
+    fell_short = _run_with(run.unstartable) + fell_short
     how = (f'{run.passed_over}: the grader started its executables ({run.generated}) instead, '
            f'as a TA would' if run.passed_over else
            f'no launch file: the grader started its executables ({run.generated}) as a launch '
@@ -409,13 +412,17 @@ def started_instead(run):
     return fell_short, Step(False, how + fell_short)
 
 
-def _with_python(names):
-    """'; words' for the Python scripts that exec could not start, run with python3, or ''."""
-    if not names:
-        return ''
-    them = 'them' if len(names) > 1 else 'it'
-    return (f'; {", ".join(names)}: no #! line exec can follow (#!/usr/bin/env python3 '
-            f'is one), so the grader ran {them} with python3, as a TA would')
+def _run_with(unstartable):
+    """'; words' for each program the scripts exec could not start were
+    run with ({name: 'python3' or 'bash'}), or ''."""
+    said = ''
+    for program, line in (('python3', '#!/usr/bin/env python3'), ('bash', '#!/bin/bash')):
+        names = [name for name, used in unstartable.items() if used == program]
+        if names:
+            them = 'them' if len(names) > 1 else 'it'
+            said += (f'; {", ".join(names)}: no #! line exec can follow ({line} is one), '
+                     f'so the grader ran {them} with {program}, as a TA would')
+    return said
 
 
 class Refused:

@@ -339,7 +339,7 @@ def _runnable(folder, depth=3):
 def _script(entry, modules=frozenset()):
     """Whether a plain file is a script a TA runs: it starts with #!, ends
     in .sh, or is a .py that is executable or starts a rospy node (a TA
-    types `python3 draw.py`; the grader runs it so: unstartable_python).
+    types `python3 draw.py`; the grader runs it so: unstartable).
     A .py that another file imports (`modules`) is a helper, no node:
     it needs no #! line, and no TA runs it."""
     if _starts_with_shebang(entry.path) or entry.name.endswith('.sh'):
@@ -474,17 +474,25 @@ def _waits(line):
                    for word in options)
 
 
-def unstartable_python(folder, depth=3):
-    """The names of the executable .py files in a package's folders that
-    exec cannot start as handed in: no #! line, one that names no program
-    by its path (`#!usr/bin/env python`, or a line ending in a carriage
-    return, written on Windows), or one that names a program this machine
-    lacks (`#!/usr/bin/python`, which Ubuntu 20.04 has only where
-    python-is-python3 is installed; a Mac's /opt/homebrew/bin/python3).
-    A TA runs them with python3."""
-    files = _executable(_plain_files(folder, depth, lambda found: False))
-    return sorted(entry.name for entry in files
-                  if entry.name.endswith('.py') and not _startable(entry.path))[:MAX_NODES]
+def unstartable(folder, depth=3):
+    """{name: the program a TA runs it with} for the executable scripts in
+    a package's folders that exec cannot start as handed in: a .py with no
+    #! line, and a .py or a shell script (.sh, or a #! naming sh or bash)
+    whose #! line names no program by its path (`#!usr/bin/env python`, or
+    a line ending in a carriage return, written on Windows) or names a
+    program this machine lacks (`#!/usr/bin/python`, which Ubuntu 20.04
+    has only where python-is-python3 is installed; a Mac's
+    /opt/homebrew/bin/python3). A .py runs with python3, a shell script
+    with bash. (A shell script with no #! is bare_shell's.)"""
+    found = {}
+    for entry in _executable(_plain_files(folder, depth, lambda found: False)):
+        if len(found) == MAX_NODES or _startable(entry.path):
+            continue
+        if entry.name.endswith('.py'):
+            found[entry.name] = 'python3'
+        elif _starts_with_shebang(entry.path) and _shell_script(entry.path):
+            found[entry.name] = 'bash'
+    return dict(sorted(found.items()))
 
 
 def _startable(path):

@@ -170,37 +170,43 @@ def test_a_shell_script_without_its_bang_is_started_with_bash(tmp_path):
 UNSTARTABLE = {'scripts/spawn.py': 'import rospy\n',                     # no #! line at all
                'scripts/topic.py': '#!usr/bin/env python\nimport rospy\n',    # no leading /
                'scripts/windows.py': '#!/usr/bin/env python3\r\nimport rospy\r\n',  # CR LF
-               'scripts/sound.py': '#! /usr/bin/env python3\nimport rospy\n'}
+               'scripts/sound.py': '#! /usr/bin/env python3\nimport rospy\n',
+               'scripts/crlf.sh': '#!/bin/bash\r\nrosservice call /clear\r\n'}  # CR LF
 
 
 def test_a_python_script_exec_cannot_start_is_started_with_python3(tmp_path):
     """A real class's scripts: one without a #! line and one whose #! names
     no path died in roslaunch ("Unable to launch", "No such file or
     directory"); a #! line that ends in a carriage return fails so too. The
-    grader's launch file starts each with python3; a sound one, as it is. A
-    module handed in mode 644 without #! is no program: it is not started."""
+    grader's launch file starts each with python3, and a shell script saved
+    so with bash; a sound one, as it is. A module handed in mode 644
+    without #! is no program: it is not started."""
     package, box, _ = handed_in(tmp_path, 'lab', {**UNSTARTABLE, 'src/lab/shapes.py': 'N = 1\n'})
     for path in UNSTARTABLE:
         os.chmod(os.path.join(box.work, 'ws', 'src', 'lab', path), 0o755)
     names = executables(box, package)
-    assert names == ['sound.py', 'spawn.py', 'topic.py', 'windows.py']
+    assert names == ['crlf.sh', 'sound.py', 'spawn.py', 'topic.py', 'windows.py']
     text = open(generated_launch(box, package, names)).read()
     for name in ('spawn', 'topic', 'windows'):
         assert f'type="{name}.py" name="{name}' in text and \
             f'name="{name}{names.index(name + ".py")}" output="screen" ' \
             f'launch-prefix="python3"/>' in text, text
-    assert 'name="sound0" output="screen"/>' in text, text
+    assert 'name="sound1" output="screen"/>' in text, text
+    assert 'name="crlf0" output="screen" launch-prefix="bash"/>' in text, text
 
 
-def test_the_scripts_run_with_python3_are_named_in_the_row_with_why():
+def test_the_scripts_run_with_python3_or_bash_are_named_in_the_row_with_why():
     run = Run(None)
-    run.generated, run.unstartable = 'keys.py, spawn.py', ['spawn.py']
+    run.generated = 'keys.py, letters.sh, sound.py, spawn.py'
+    run.unstartable = {'letters.sh': 'bash', 'sound.py': 'python3', 'spawn.py': 'python3'}
     run.launch = Step(True, 'turtlesim up, /keys0 listening on /chatter, in 2.0 s')
     fell_short, step = started_instead(run)
-    assert fell_short == '; spawn.py: no #! line exec can follow (#!/usr/bin/env python3 ' \
-                         'is one), so the grader ran it with python3, as a TA would'
+    assert fell_short == '; sound.py, spawn.py: no #! line exec can follow (#!/usr/bin/env ' \
+                         'python3 is one), so the grader ran them with python3, as a TA ' \
+                         'would; letters.sh: no #! line exec can follow (#!/bin/bash is one), ' \
+                         'so the grader ran it with bash, as a TA would'
     assert step.says == 'no launch file: the grader started its executables (keys.py, ' \
-                        'spawn.py) as a launch file would' + fell_short
+                        'letters.sh, sound.py, spawn.py) as a launch file would' + fell_short
 
 
 def test_the_terminal_says_whether_it_reads_in_lines_or_key_by_key():

@@ -255,7 +255,7 @@ def test_loose_ros_2_scripts_are_refused_in_words_and_a_rospy_one_without_its_li
     """Scripts handed in without a package.xml: one that imports rclpy (a
     real class's turtlesim_ros2.py, executable, no #! line) is ROS 2 code,
     said so rather than 'no package.xml'; one that imports rospy, a TA
-    runs with python3 (session.unstartable_python), so it is wrapped."""
+    runs with python3 (submission.unstartable), so it is wrapped."""
     make(tmp_path, {'two/turtlesim_ros2.py': 'import rclpy\nfrom rclpy.node import Node\n',
                     'two/README.md': 'draws a house',
                     'one/draw.py': 'import rospy\nrospy.init_node("d")\n'})
@@ -285,7 +285,7 @@ def test_a_rospy_script_handed_in_without_its_line_or_mode_is_run_with_python3(t
                     'lab/scripts/notes.txt': 'import rospy\n'})
     folder = str(tmp_path / 'lab')
     assert submission.made_executable(folder) == ['scripts/draw.py']
-    assert submission.unstartable_python(folder) == ['draw.py']
+    assert submission.unstartable(folder) == {'draw.py': 'python3'}
     assert submission.scripts(folder) == ['draw.py']
 
 
@@ -302,7 +302,23 @@ def test_an_executable_script_whose_interpreter_this_machine_lacks_is_run_with_p
                     'lab/scripts/folder.py': '#!/usr/bin\nimport rospy\n'})
     for name in ('mac.py', 'env.py', 'folder.py'):
         os.chmod(tmp_path / 'lab' / 'scripts' / name, 0o755)
-    assert submission.unstartable_python(str(tmp_path / 'lab')) == ['folder.py', 'mac.py']
+    assert submission.unstartable(str(tmp_path / 'lab')) == {'folder.py': 'python3',
+                                                             'mac.py': 'python3'}
+
+
+def test_a_shell_script_whose_line_exec_cannot_follow_is_run_with_bash(tmp_path):
+    """A shell script saved on Windows, its #!/bin/bash line ending in a
+    carriage return (exec looks for `bash\\r`), and one whose #! names a
+    shell this machine lacks, are run with bash, as a TA types `bash
+    letters.sh`; a sound one, and one with no #! (bare_shell's: its
+    course's instructions say to run it with bash), are not named."""
+    make(tmp_path, {'lab/scripts/windows.sh': '#!/bin/bash\r\nrosservice call /clear\r\n',
+                    'lab/scripts/draw': '#!/opt/homebrew/bin/bash\nrosservice call /clear\n',
+                    'lab/scripts/sound.sh': '#!/bin/bash\nrosservice call /clear\n',
+                    'lab/scripts/bare.sh': 'rosservice call /clear\n'})
+    for name in ('windows.sh', 'draw', 'sound.sh', 'bare.sh'):
+        os.chmod(tmp_path / 'lab' / 'scripts' / name, 0o755)
+    assert submission.unstartable(str(tmp_path / 'lab')) == {'draw': 'bash', 'windows.sh': 'bash'}
 
 
 def test_a_rostopic_pub_that_waits_is_found_in_the_scripts_started(tmp_path):
