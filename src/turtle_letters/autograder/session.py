@@ -21,8 +21,8 @@ from .failures import RLEXCEPTION, sources, talker_failure, why_not_launched, wh
 from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
-                         nodes, scripts, started_packages, unbuilt_scripts, unstartable,
-                         waiting_publishers, wrap)
+                         nodes, scripts, sources_built_by_nothing, started_packages,
+                         unbuilt_scripts, unstartable, waiting_publishers, wrap)
 from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
                     terminal_stand_ins)
 
@@ -195,12 +195,16 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
             result.build = result.build._replace(says=f'{folder_made}; then {result.build.says}')
         return _unbuilt(box, limits, result)
     _launch_and_watch(box, limits, result)
-    if _refused(result, box) and box.going():
-        first, refused = result, result.launch.says
+    refused = _refused(result, box)
+    if refused and not executables(box, package):
+        result.launch = Step(False, f'{result.launch.says}; {package.name} has no executable '
+                                    f'to run instead{_never_built(box, package)}')
+    elif refused and box.going():
+        first, says = result, result.launch.says
         result = Run(package._replace(launch=None), letters)     # a fresh world, the same build
         result.build, result.log = first.build, first.log
         _launch_and_watch(box, limits, result)
-        result.launch = Step(False, f'{refused}; the grader ran its executables instead '
+        result.launch = Step(False, f'{says}; the grader ran its executables instead '
                                     f'({result.generated}), as a TA would{result.fell_short}')
     elif made and result.launch is not None and result.launch.ok:
         result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
@@ -285,6 +289,13 @@ def _refused(result, box):
                                          {result.package.name: copied})}
     return result.launch.says.startswith((REFUSAL, RLEXCEPTION)) or \
         bool(started & set(unstartable(copied)))
+
+
+def _never_built(box, package):
+    """': why', where the package's C++ sources are built by nothing, or ''."""
+    sources = sources_built_by_nothing(_copied(box, package))
+    return sources and (f': its CMakeLists.txt builds no program of {", ".join(sources)} '
+                        f'(add_executable(name {sources[0]}) builds one)') or ''
 
 
 def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:

@@ -310,6 +310,19 @@ def unbuilt_scripts(folder, depth=3):
     return sorted({entry.name for entry in files if _script(entry)})[:MAX_NODES]
 
 
+def sources_built_by_nothing(folder, depth=3):
+    """The C++ sources in a package's folders (paths in it), where its
+    CMakeLists.txt builds no program (no add_executable outside a comment):
+    a node written and never built, so rosrun finds none. [] otherwise."""
+    cmake = (read_plain(os.path.join(folder, 'CMakeLists.txt'), MAX_BYTES) or b'').decode(
+        'utf-8', 'replace')
+    if re.search(r'^[^#\n]*\badd_executable\s*\(', cmake, re.MULTILINE):
+        return []
+    return sorted(os.path.relpath(entry.path, folder)
+                  for entry in _plain_files(folder, depth, lambda found: False)
+                  if entry.name.endswith(('.cpp', '.cc', '.cxx')))[:MAX_NODES]
+
+
 def _executable(entries):
     return [entry for entry in entries if os.access(entry.path, os.X_OK)]
 

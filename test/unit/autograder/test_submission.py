@@ -321,6 +321,20 @@ def test_a_shell_script_whose_line_exec_cannot_follow_is_run_with_bash(tmp_path)
     assert submission.unstartable(str(tmp_path / 'lab')) == {'draw': 'bash', 'windows.sh': 'bash'}
 
 
+def test_cpp_sources_no_add_executable_builds_are_named(tmp_path):
+    """A C++ node written and never built: catkin_create_pkg's CMakeLists.txt
+    keeps its add_executable commented out, and rosrun finds no node. Its
+    sources are named; where an add_executable stands, none is."""
+    template = ('cmake_minimum_required(VERSION 3.0.2)\nproject(drawer)\n'
+                'find_package(catkin REQUIRED COMPONENTS roscpp)\ncatkin_package()\n'
+                '# add_executable(${PROJECT_NAME}_node src/drawer_node.cpp)\n')
+    make(tmp_path, {'drawer/CMakeLists.txt': template, 'drawer/src/draw.cpp': 'int main() {}\n',
+                    'drawer/src/shapes.h': '#pragma once\n'})
+    assert submission.sources_built_by_nothing(str(tmp_path / 'drawer')) == ['src/draw.cpp']
+    make(tmp_path, {'drawer/CMakeLists.txt': template + 'add_executable(draw src/draw.cpp)\n'})
+    assert submission.sources_built_by_nothing(str(tmp_path / 'drawer')) == []
+
+
 def test_a_rostopic_pub_that_waits_is_found_in_the_scripts_started(tmp_path):
     """waiting_publishers: a shell script's first `rostopic pub` with no -1,
     -r or -f (a latched -l typed for -1) waits to be stopped; a backgrounded
