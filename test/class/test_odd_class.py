@@ -17,8 +17,8 @@ one handed in without a CMakeLists.txt (its letter a shell script, as a
 real class's was: run unbuilt), and one whose script stops at its first
 `rostopic pub -l` (latch, where -1 was meant), as a real class's did,
 and a C++ package whose CMakeLists.txt builds none of its nodes (its
-add_executable lines commented out, as catkin_create_pkg writes them).
-Each costs its own row only, says why in words, and the grader's own
+add_executable lines commented out, as catkin_create_pkg writes them),
+with its launch file and without. Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
 import json
@@ -140,6 +140,8 @@ CONCLUSIONS = {
                                     'CMakeLists.txt builds no program of src/h_drawer.cpp, '
                                     'src/h_talker.cpp (add_executable(name src/h_drawer.cpp) '
                                     'builds one)'),
+    'o18_no_launch': ('', 'fail', 'no launch file, and hana_lab has no executable to run: its '
+                                  'CMakeLists.txt builds no program of src/h_drawer.cpp'),
 }
 
 
@@ -197,13 +199,15 @@ def graded(tmp_path_factory):
         os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
         with open(os.path.join(cls, 'o7_siblings', 'gazebo_world', name), 'w') as f:
             f.write(text)
-    shutil.copytree(HANA, os.path.join(cls, 'o17_never_built'))
-    cmake = os.path.join(cls, 'o17_never_built', 'hana_lab', 'CMakeLists.txt')
-    with open(cmake) as f:      # as catkin_create_pkg wrote them: commented out, never built
-        text = f.read().replace('add_executable', '# add_executable').replace(
-            'target_link_libraries', '# target_link_libraries')
-    with open(cmake, 'w') as f:
-        f.write(text)
+    for sid in ('o17_never_built', 'o18_no_launch'):
+        shutil.copytree(HANA, os.path.join(cls, sid))
+        cmake = os.path.join(cls, sid, 'hana_lab', 'CMakeLists.txt')
+        with open(cmake) as f:      # as catkin_create_pkg wrote them: commented out, never built
+            text = f.read().replace('add_executable', '# add_executable').replace(
+                'target_link_libraries', '# target_link_libraries')
+        with open(cmake, 'w') as f:
+            f.write(text)
+    shutil.rmtree(os.path.join(cls, 'o18_no_launch', 'hana_lab', 'launch'))
     no_cmake = {name: text for name, text in BY_HAND.items() if name != 'CMakeLists.txt'}
     for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS),
                           ('o15_no_cmake/hw3', no_cmake), ('o16_latched/hw3', LATCHED)):
@@ -219,7 +223,7 @@ def graded(tmp_path_factory):
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +
         ''.join(f'{sid},Noah Klein,N\n' for sid in NOAHS) +
-        'h7_printer,Hugo Stile,P\no17_never_built,Hana Sato,H\n')
+        'h7_printer,Hugo Stile,P\no17_never_built,Hana Sato,H\no18_no_launch,Hana Sato,H\n')
     before = sandbox_processes()
     try:
         yield (out,) + peak_memory_kb(started_grading(

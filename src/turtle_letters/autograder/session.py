@@ -177,7 +177,7 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
     there: scripts handed in without the execute bit run all the same, and
     a launch file that cannot start its nodes (a wrong pkg or type, a
     launch-prefix of a program the machine lacks) gives way to the
-    package's executables, started as without a launch file.
+    package's executables, started as without a launch file (_launch_or_fall_back).
     Scripts handed in without a package.xml are wrapped in one and run,
     and an include folder the package names and lacks is made (_built),
     each costing `builds` alone. A prompt that waits for a line where P drew
@@ -194,19 +194,8 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
         if folder_made:
             result.build = result.build._replace(says=f'{folder_made}; then {result.build.says}')
         return _unbuilt(box, limits, result)
-    _launch_and_watch(box, limits, result)
-    refused = _refused(result, box)
-    if refused and not executables(box, package):
-        result.launch = Step(False, f'{result.launch.says}; {package.name} has no executable '
-                                    f'to run instead{_never_built(box, package)}')
-    elif refused and box.going():
-        first, says = result, result.launch.says
-        result = Run(package._replace(launch=None), letters)     # a fresh world, the same build
-        result.build, result.log = first.build, first.log
-        _launch_and_watch(box, limits, result)
-        result.launch = Step(False, f'{says}; the grader ran its executables instead '
-                                    f'({result.generated}), as a TA would{result.fell_short}')
-    elif made and result.launch is not None and result.launch.ok:
+    result = _launch_or_fall_back(box, limits, result)
+    if made and result.launch is not None and result.launch.ok:
         result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
                                     f'the grader made {"them" if len(made) > 1 else "it"} '
                                     f'executable, as a TA would', result.launch.seconds)
@@ -217,6 +206,32 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
                                    f'workspace builds; the grader wrapped its files in a package '
                                    f'({LOOSE}) and ran its scripts, as a TA would',
                             result.build.seconds)
+    return result
+
+
+def _launch_or_fall_back(box, limits, result) -> Run:
+    """`result` with the lab launched and watched; where its launch file
+    cannot start its nodes, a fresh Run of the package's executables
+    instead, in a fresh world on the same build. A package with no
+    executable to run is said so (_never_built), and nothing is run."""
+    package = result.package
+    if not (package.launch or executables(box, package)):
+        result.launch = Step(False, f'no launch file, and {package.name} has no executable to '
+                                    f'run{_never_built(box, package)}')
+        return result
+    _launch_and_watch(box, limits, result)
+    if not _refused(result, box) or not box.going():
+        return result
+    if not executables(box, package):
+        result.launch = Step(False, f'{result.launch.says}; {package.name} has no executable '
+                                    f'to run instead{_never_built(box, package)}')
+        return result
+    first, says = result, result.launch.says
+    result = Run(package._replace(launch=None), first.letters)
+    result.build, result.log = first.build, first.log
+    _launch_and_watch(box, limits, result)
+    result.launch = Step(False, f'{says}; the grader ran its executables instead '
+                                f'({result.generated}), as a TA would{result.fell_short}')
     return result
 
 
