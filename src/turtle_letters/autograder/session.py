@@ -309,8 +309,10 @@ def _refused(result, box):
 def _never_built(box, package):
     """': why', where the package's C++ sources are built by nothing, or ''."""
     sources = sources_built_by_nothing(_copied(box, package))
-    return sources and (f': its CMakeLists.txt builds no program of {", ".join(sources)} '
-                        f'(add_executable(name {sources[0]}) builds one)') or ''
+    if not sources:
+        return ''
+    return (f': its CMakeLists.txt builds no program of {", ".join(sources)} '
+            f'(add_executable(name {sources[0]}) builds one)')
 
 
 def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:

@@ -499,7 +499,9 @@ def unstartable(folder, depth=3):
     with bash. (A shell script with no #! is bare_shell's.)"""
     found = {}
     for entry in _executable(_plain_files(folder, depth, lambda found: False)):
-        if len(found) == MAX_NODES or _startable(entry.path):
+        if len(found) == MAX_NODES:
+            break
+        if _startable(entry.path):
             continue
         if entry.name.endswith('.py'):
             found[entry.name] = 'python3'
@@ -512,11 +514,11 @@ def _startable(path):
     """Whether a script's first line is a #! that exec can follow: a path from /,
     of a program this machine has (the sandbox sees its system), no CR."""
     first = (read_plain(path, 200) or b'').split(b'\n')[0]
-    program = re.match(rb'#!\s*(/\S*)', first)
-    if program is None or first.endswith(b'\r'):
+    named = re.match(rb'#!\s*(/\S*)', first)
+    if named is None or first.endswith(b'\r'):
         return False
-    path = os.fsdecode(program.group(1))
-    return os.path.isfile(path) and os.access(path, os.X_OK)
+    program = os.fsdecode(named.group(1))
+    return os.path.isfile(program) and os.access(program, os.X_OK)
 
 
 def _starts_with_shebang(path):
