@@ -7,7 +7,7 @@ import subprocess
 import unicodedata
 import urllib.parse
 
-LINE_MOST = 500         # characters of one line shown: a fallback's own words take 300 of them
+LINE_MOST = 500         # characters of one line shown: a fallback's own words take up to about 280
 # Unicode's control, format, surrogate, unassigned and line-separator
 # characters: a terminal acts on some, XML forbids others, and a bidi
 # override makes a line read other than it is.
