@@ -56,6 +56,7 @@ class Run:
         self.events, self.trigger, self.cpu_pct = [], None, None
         self.record = []        # what the grader's simulator did (world.py)
         self.broken = ''        # how the grader's world was broken during the run, if it was
+        self.world_failed = False   # ... of itself, not by the submission (GradingWorld.failed)
         self.since = None       # t from which the drawing is looked for
         self.stuck = ''         # why the turtle never moved after the trigger, if it did not
         self.still_from = None  # where in the terminal's text the wait for a first move began
@@ -181,7 +182,8 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
     Scripts handed in without a package.xml are wrapped in one and run,
     and an include folder the package names and lacks is made (_built),
     each costing `builds` alone. A prompt that waits for a line where P drew
-    nothing is typed the roster's `letters` (_typed_letters)."""
+    nothing is typed the roster's `letters` (_typed_letters). Where the
+    grader's own world fails under the run, it is run again (_again)."""
     result = Run(package, letters)
     made = prepare(package, box.work)
     stand_in(box.work)
@@ -195,6 +197,9 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
             result.build = result.build._replace(says=f'{folder_made}; then {result.build.says}')
         return _unbuilt(box, limits, result)
     result = _launch_or_fall_back(box, limits, result)
+    failed = result.broken if result.world_failed and box.going() else ''
+    if failed:
+        result = _again(box, limits, package, result)
     if made and result.launch is not None and result.launch.ok:
         result.launch = Step(False, f'{", ".join(made)} handed in without the execute bit: '
                                     f'the grader made {"them" if len(made) > 1 else "it"} '
@@ -206,6 +211,10 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
                                    f'workspace builds; the grader wrapped its files in a package '
                                    f'({LOOSE}) and ran its scripts, as a TA would',
                             result.build.seconds)
+    if failed and result.launch is not None:
+        result.launch = result.launch._replace(
+            says=f"{result.launch.says}; {failed} in the first run, not by the submission's "
+                 f"doing: the grader ran it again in a fresh world")
     return result
 
 
@@ -233,6 +242,17 @@ def _launch_or_fall_back(box, limits, result) -> Run:
     result.launch = Step(False, f'{says}; the grader ran its executables instead '
                                 f'({result.generated}), as a TA would{result.fell_short}')
     return result
+
+
+def _again(box, limits, package, first):
+    """A TA's next try where the grader's own world failed under the run
+    (Run.world_failed): the package launched again, as at first, in a fresh
+    world on the same build. It costs the student nothing (run() says it
+    in the launch step); a second failure is the row's, in its own words."""
+    result = Run(package, first.letters)
+    result.build = first.build
+    result.log = first.log + [("the grader's own failure", f'{first.broken}: run again')]
+    return _launch_or_fall_back(box, limits, result)
 
 
 def _built(box, limits, result):
@@ -412,6 +432,7 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
     finally:
         result.finished = time.monotonic()
         result.limit, result.broken = lab.limit(), lab.world.broken()
+        result.world_failed = lab.world.failed() and not result.limit
         watcher_said = lab.stop()
         result.events, result.record = list(lab.watcher.events), list(lab.world.events)
         result.log.append((f'roslaunch {" ".join(launch)}', lab.terminal.text()))

@@ -280,6 +280,14 @@ class GradingWorld:
             return f"the grader's ROS master was shut down (exit {self.master.returncode})"
         return ''
 
+    def failed(self):
+        """Whether the world broke of itself: its simulator ended, and not
+        shut down (which a node of the submission's may ask, and the
+        simulator records as 'end'). The submission runs as another user and
+        cannot signal it: such an end is the grader's or the machine's."""
+        return (self.simulator is not None and self.simulator.poll() is not None
+                and not any(e['k'] == 'end' for e in self.events))
+
     def overflowed(self):
         """The limit of the world's that the submission reached, in words, or ''."""
         if self.record.full:
