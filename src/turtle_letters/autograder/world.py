@@ -283,8 +283,10 @@ class GradingWorld:
     def failed(self):
         """Whether the world broke of itself: its simulator ended, and not
         shut down (which a node of the submission's may ask, and the
-        simulator records as 'end'). The submission runs as another user and
-        cannot signal it: such an end is the grader's or the machine's."""
+        simulator records as 'end'). In a sandbox the submission runs as
+        another user and cannot signal it: such an end is the grader's or
+        the machine's (with --no-sandbox it could kill it, and fails alike
+        when run again)."""
         return (self.simulator is not None and self.simulator.poll() is not None
                 and not any(e['k'] == 'end' for e in self.events))
 
