@@ -202,6 +202,26 @@ def _parent(pid):
         return 0
 
 
+def _world_env(master_uri, home):
+    """The environment of the grader's master and simulator, at home in `home`."""
+    env = {name: value for name, value in os.environ.items() if name in WORLD_VARIABLES}
+    env['PYTHONPATH'] = os.path.join(SIM_FOLDER, 'src') + ':' + env.get('PYTHONPATH', '')
+    env.update(HOME=home, ROS_HOME=home, TMPDIR=home, LANG='C.UTF-8',
+               ROS_MASTER_URI=master_uri, ROS_IP='127.0.0.1',
+               QT_QPA_PLATFORM='offscreen', PYTHONUNBUFFERED='1')
+    return env
+
+
+def _simulator_command(port, turtles):
+    """The bundled simulator, started once the master on `port` listens: the
+    simulator sets its parameters at once, and a master slow to start (a
+    loaded machine) refused them."""
+    return ['bash', '-c', 'for _ in $(seq 300); do (exec 3<>"/dev/tcp/127.0.0.1/$0") '
+                          '2>/dev/null && break; sleep 0.1; done; exec "$@"', port,
+            '/usr/bin/python3', os.path.join(SIM_FOLDER, 'scripts', 'turtlesim_node'),
+            f'__name:={SIMULATOR[1:]}', f'_max_turtles:={turtles}']
+
+
 class GradingWorld:
     """rosmaster and the simulator for one sandbox (`box`); `events` is the
     simulator's record as it comes, one dict a line ('k', 't', ...)."""
@@ -212,14 +232,6 @@ class GradingWorld:
                                 lambda e: isinstance(e, dict) and 'k' in e and 't' in e)
         self.events = self.record.items     # the record as it comes
         self.master = self.simulator = self.reader = self.cgroup = None
-
-    def _env(self):
-        env = {name: value for name, value in os.environ.items() if name in WORLD_VARIABLES}
-        env['PYTHONPATH'] = os.path.join(SIM_FOLDER, 'src') + ':' + env.get('PYTHONPATH', '')
-        env.update(HOME=self.home, ROS_HOME=self.home, TMPDIR=self.home, LANG='C.UTF-8',
-                   ROS_MASTER_URI=self.box.master_uri, ROS_IP='127.0.0.1',
-                   QT_QPA_PLATFORM='offscreen', PYTHONUNBUFFERED='1')
-        return env
 
     def start(self):
         """Starts both and waits for the simulator's turtle1: the world is up."""
@@ -236,14 +248,9 @@ class GradingWorld:
         # children for init to reap, and none but rosmaster is needed
         self.master = self._started(['rosmaster', '--core', '-p', port, '-w', '3'], log)
         read_end, write_end = os.pipe()
-        env = dict(self._env(), TURTLESIM_RECORD_FD=str(write_end))
-        # once the master listens: the simulator sets its parameters at once,
-        # and a master slow to start (a loaded machine) refused them
-        self.simulator = self._started(
-            ['bash', '-c', 'for _ in $(seq 300); do (exec 3<>"/dev/tcp/127.0.0.1/$0") '
-                           '2>/dev/null && break; sleep 0.1; done; exec "$@"', port,
-             '/usr/bin/python3', os.path.join(SIM_FOLDER, 'scripts', 'turtlesim_node'),
-             f'__name:={SIMULATOR[1:]}', f'_max_turtles:={self.limits.turtles}'], log, env, (write_end,))
+        env = dict(_world_env(self.box.master_uri, self.home), TURTLESIM_RECORD_FD=str(write_end))
+        self.simulator = self._started(_simulator_command(port, self.limits.turtles), log, env,
+                                       (write_end,))
         os.close(write_end)
         log.close()
         self.reader = threading.Thread(target=_read_to_end, args=(read_end, self.record),
@@ -261,7 +268,7 @@ class GradingWorld:
         joining = self.cgroup.joining() if self.cgroup is not None else []
         return self.box.started(subprocess.Popen(
             joining + self.box.beside.command(argv, True, [SIM_FOLDER], [self.home]),
-            env=env or self._env(),
+            env=env or _world_env(self.box.master_uri, self.home),
             cwd=self.home, stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
             pass_fds=fds, start_new_session=True))
 
