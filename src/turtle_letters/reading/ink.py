@@ -23,6 +23,7 @@ OVERSHOOT = 1 / 3   # share of that run that may stick out past the rest of the 
 LONG_RUN = 0.5      # ... where the run is this share of the rest's larger side long, at least
 HOME_NEAR = 0.01    # m: a line begun this near where a turtle appeared begins there
 LEAD_IN = 0.05      # share of the ink's height a lead-in is long, at least: less is a nub
+POKE = 0.15         # ... an end may run on past a line it crosses, at most: poked through
 
 
 def box(points):
@@ -193,6 +194,66 @@ def led_in(ink, homes):
                 length([line[:end + 1]]) >= LEAD_IN * height:
             trimmed[k], changed = list(line[end:]), True
     return trimmed if changed else None
+
+
+def poked_through(ink):
+    """`ink` with each end of a line cut back to the last line its straight
+    run (within RUN_TURN) crosses, where it runs on past that line by
+    LEAD_IN to POKE of the ink's height, and no farther than it ran up to
+    it: a TA looks past a bar driven on through the stem it meets (a real
+    class's B, drawn by `rostopic pub`, its middle bar run on about 0.12 of
+    its height past its stem in one run, read as no letter). Less is a nub
+    the fits pass over. None where no end is so."""
+    height = box([p for line in ink for p in line])[3] if any(ink) else 0.0
+    trimmed, changed = [list(line) for line in ink], False
+    for k in range(len(trimmed)):
+        for backwards in (False, True):
+            line = trimmed[k][::-1] if backwards else trimmed[k]
+            cut = _cut_at_crossing(line, trimmed[:k] + trimmed[k + 1:], height)
+            if cut is not None:
+                trimmed[k], changed = cut[::-1] if backwards else cut, True
+    return trimmed if changed else None
+
+
+def _cut_at_crossing(line, others, height):
+    """`line` cut back to where its last straight run last crosses `others`
+    or its own earlier part, where it runs on past there by LEAD_IN to POKE
+    of `height`, and no farther than the run reached there; None where it
+    does not."""
+    run = _last_run(line)
+    if run is None or len(line) - run < 2:
+        return None
+    points = numpy.asarray(line, dtype=float)
+    steps = numpy.hypot(*numpy.diff(points, axis=0).T)
+    to_end = numpy.r_[numpy.cumsum(steps[::-1])[::-1], 0.0]    # from each point to the end
+    first = max(run, int(numpy.flatnonzero(to_end <= POKE * height)[0]) - 1)
+    tail = points[first:]
+    segments = [numpy.asarray(other, dtype=float) for other in others if len(other) > 1]
+    if first > 1:
+        segments.append(points[:first])       # its own earlier part, but the step into the tail
+    if not segments:
+        return None
+    starts = numpy.concatenate([s[:-1] for s in segments])
+    ends = numpy.concatenate([s[1:] for s in segments])
+    r, q = numpy.diff(tail, axis=0)[:, None, :], (ends - starts)[None, :, :]
+    gap = starts[None, :, :] - tail[:-1, None, :]
+    denominator = r[..., 0] * q[..., 1] - r[..., 1] * q[..., 0]
+    with numpy.errstate(divide='ignore', invalid='ignore'):
+        t = (gap[..., 0] * q[..., 1] - gap[..., 1] * q[..., 0]) / denominator
+        u = (gap[..., 0] * r[..., 1] - gap[..., 1] * r[..., 0]) / denominator
+    hit = (denominator != 0) & (t >= 0) & (t <= 1) & (u >= 0) & (u <= 1)
+    if not hit.any():
+        return None
+    i, j = numpy.nonzero(hit)
+    left = to_end[first + i] - t[i, j] * steps[first + i]    # from each crossing to the end
+    nearest = int(numpy.argmin(left))
+    # a bar poked through runs up to the line longer than past it: a G's short
+    # bar crossing the K beside it is a stroke of its own, and cut back it was a C
+    if not LEAD_IN * height <= left[nearest] <= min(POKE * height, to_end[run] - left[nearest]):
+        return None
+    k = first + int(i[nearest])
+    at = points[k] + t[i[nearest], j[nearest]] * (points[k + 1] - points[k])
+    return list(line[:k + 1]) + [(float(at[0]), float(at[1]))]
 
 
 def _last_run(line):

@@ -14,7 +14,7 @@ from typing import List, NamedTuple
 
 import numpy
 
-from .ink import box, dash, ends_driven_on, flooded, led_in, samples
+from .ink import box, dash, ends_driven_on, flooded, led_in, poked_through, samples
 from .forms import CLEAN
 from .recognition import Reading, Unfinished, bounded
 from .rows import apart, in_colours, read_blind, read_row, without_specks
@@ -31,6 +31,7 @@ DRIVEN_ON = ("read with a stroke's end that ran on past the rest of its letter c
              "turtlesim drives a command on for up to a second")
 LED_IN = ("read without its lead-in, the straight line its turtle drew from where it "
           "appeared to where its letter begins (lift the pen, or teleport, to get there)")
+POKED = "read with a stroke's end that ran on through the line it meets cut back to that line"
 LETTER_WIDTH = 0.7  # share of its height a letter is wide, to count the letters of a line by
 
 
@@ -66,11 +67,13 @@ def _read_page(ink, looks, expected, homes):
     """The page as read_page finds it; where it does not read every letter, the
     writing it was read in read again as a TA looks past what is not the
     letters: its lines' ends driven on cut back (ink.ends_driven_on), then
-    a lead-in from where a turtle appeared (ink.led_in). Each is kept
+    a lead-in from where a turtle appeared (ink.led_in), then ends run on
+    through the line they meet (ink.poked_through). Each is kept
     where so more letters read in place, none of them where the writing
     as drawn reads another (_unless_drawn_otherwise)."""
     drawn = page = _first_read(ink, looks, expected)
-    for trim, said in ((ends_driven_on, DRIVEN_ON), (lambda lines: led_in(lines, homes), LED_IN)):
+    for trim, said in ((ends_driven_on, DRIVEN_ON), (lambda lines: led_in(lines, homes), LED_IN),
+                       (poked_through, POKED)):
         trimmed = None if _in_place(page.readings, expected) == len(expected) else \
             trim(page.writing.ink)
         if trimmed is None:

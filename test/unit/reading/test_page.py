@@ -330,3 +330,61 @@ def test_only_a_straight_run_from_where_a_turtle_appeared_into_more_ink_is_a_lea
              HOME[1] + 0.5 - 0.5 * math.cos(k * math.tau / 200)) for k in range(201)]
     stem = [(HOME[0], HOME[1] - 3 * k / 100) for k in range(1, 101)]
     assert led_in([bowl + stem], [HOME]) is None
+
+
+def round_b(poke):
+    """A B 4 m high, its stem and two round bowls, the bowls meeting right
+    of the stem, and its middle bar driven from there leftwards through
+    the stem, `poke` m past it (a real class's B, by `rostopic pub`, ran
+    its bar on past its stem in one run of two); the lower bowl a line
+    of its own."""
+    def arc(centre_y, x=0.65):
+        return [(x + math.sin(k * math.pi / 60), centre_y + math.cos(k * math.pi / 60))
+                for k in range(1, 61)]
+    upper = [(0, 0), (0, 4), (0.65, 4)] + arc(3) + [(-poke, 2)]
+    lower = [(0.65, 2)] + arc(1) + [(0, 0)]
+    return [driven(line[0], [(b[0] - a[0], b[1] - a[1]) for a, b in zip(line, line[1:])])
+            for line in (upper, lower)]
+
+
+def test_a_bar_driven_on_through_the_stem_it_meets_reads_cut_back_to_the_stem():
+    """A B's middle bar run on an eighth of its height past its stem: as
+    drawn, no letter; read with the bar cut back to the stem, a B, and the
+    row says so. Nothing else earns."""
+    import string
+    from turtle_letters.reading.page import POKED
+    ink = round_b(0.5)
+    assert letters(read_page([ink[0][:-round(0.5 / 0.016)]] + ink[1:], [], 'B')) == 'B'
+    page = read_page(ink, [], 'B')
+    assert letters(page) == 'B' and page.where == POKED
+    assert [c for c in string.ascii_uppercase if letters(read_page(ink, [], c)) == c] == ['B']
+
+
+@pytest.mark.parametrize('poke, cut_back', [(0.1, False), (0.5, True), (0.8, False)])
+def test_only_an_end_run_on_past_a_line_it_crosses_by_a_twentieth_to_three_twentieths_is_cut(
+        poke, cut_back):
+    """Past the stem by less than a twentieth of the height, a nub the fits
+    pass over; by more than three twentieths, a stroke of its own (an A's
+    bar run on is a leg's foot)."""
+    from turtle_letters.reading.ink import poked_through
+    trimmed = poked_through(round_b(poke))
+    assert (trimmed is not None) == cut_back
+    if cut_back:
+        assert trimmed[0][-1] == pytest.approx((0.0, 2.0), abs=1e-9)
+        assert trimmed[1] == round_b(poke)[1]
+
+
+@pytest.mark.parametrize('start, cut_back', [(1.0, True), (0.1, False)])
+def test_only_a_bar_longer_before_the_line_it_crosses_than_past_it_is_cut_back(start, cut_back):
+    """A bar from `start` m right of a 4 m stem, run 0.5 m past it: a bar
+    poked through where more of it lies before the stem than past it; else
+    a short stroke of its own that crosses a line (a G's bar crossing the
+    K beside it, cut away all but its last 2%, left a C). Its start, 0.1 m
+    right of the stem, is a nub: no end is cut."""
+    from turtle_letters.reading.ink import poked_through
+    stem = driven((0.0, 0.0), [(0.0, 4.0)])
+    bar = driven((start, 2.0), [(-start - 0.5, 0.0)])
+    trimmed = poked_through([stem, bar])
+    assert (trimmed is not None) == cut_back
+    if cut_back:
+        assert trimmed[1][-1] == pytest.approx((0.0, 2.0), abs=1e-9)
