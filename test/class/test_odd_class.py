@@ -102,7 +102,7 @@ ASKS = {'package.xml': BY_HAND['package.xml'].replace('hw3', 'asks'),
                            '        rospy.sleep(1.5)\n'}
 PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
 RUBRIC = os.path.join(HERE, 'rubric.yaml')
-NOAHS = ('o6_three', 'o10_turning')          # Noah's package, its scripts changed
+NOAHS = ('o6_three', 'o10_turning', 'o19_passed_over')     # Noah's package, changed
 MULLER = os.fsdecode(b'o2_M\xfcller')      # "Müller" as a Latin-1 zip names it
 GRADER_MEMORY_KB = 400 * 1024               # the whole grader, Qt and all, on 1 GB of output
 pytestmark = pytest.mark.skipif(os.geteuid() != 0, reason='grading makes network namespaces: '
@@ -116,6 +116,10 @@ CONCLUSIONS = {
     'h7_printer': ('', 'fail', 'catkin_make failed: error:'),
     'o2_M\ufffdller': ('L', 'fail', 'no letter is expected'),
     'o6_three': ('N', 'pass', 'together, then n_controller.py alone in a fresh world'),
+    'o19_passed_over': ('N', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none '
+                                     'of lab_one: the grader started its executables (keyboard.py, '
+                                     'n_controller.py, spin_forever.py) together, then '
+                                     'n_controller.py alone in a fresh world'),
     'o7_siblings': ('L', 'pass', 'every criterion met'),
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
     'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none of '
@@ -188,6 +192,14 @@ def graded(tmp_path_factory):
     with open(spin, 'w') as f:
         f.write(SPIN)
     os.chmod(spin, 0o755)
+    # o6's fight again, where its launch file starts turtlesim alone (a real class's
+    # started Gazebo): the alone run's line says so, not "no launch file"
+    shutil.copytree(os.path.join(cls, 'o6_three'), os.path.join(cls, 'o19_passed_over'))
+    launch = os.path.join(cls, 'o19_passed_over', 'noah_ws', 'src', 'lab_one', 'launch')
+    os.makedirs(launch)
+    with open(os.path.join(launch, 'turtle.launch'), 'w') as f:
+        f.write('<launch>\n  <node pkg="turtlesim" type="turtlesim_node" name="sim"/>\n'
+                '</launch>\n')
     shutil.copytree(NOAH, os.path.join(cls, 'o10_turning'))
     for name, text in (('n_controller.py', TURN), ('spin_forever.py', TURN), ('idle.py', IDLE)):
         script = os.path.join(cls, 'o10_turning', 'noah_ws', 'src', 'lab_one', 'scripts', name)

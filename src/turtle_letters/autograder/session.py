@@ -342,10 +342,11 @@ def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
     result = Run(first.package._replace(launch=None), first.letters)
     result.build, result.log = first.build, list(first.log)
     _launch_and_watch(box, limits, result, only=name)
-    if result.launch is not None:
-        result.launch = Step(False, f'no launch file: the grader started its executables '
-                                    f'({first.generated}) together, then {name} alone in a '
-                                    f'fresh world, as a TA would{result.fell_short}')
+    if result.launch is not None:      # why the first run started them, as it said
+        result.launch = Step(False, f'{first.passed_over or "no launch file"}: the grader '
+                                    f'started its executables ({first.generated}) together, '
+                                    f'then {name} alone in a fresh world, as a TA '
+                                    f'would{result.fell_short}')
     return result
 
 
