@@ -73,7 +73,7 @@ def _read_page(ink, looks, expected, homes):
     as drawn reads another (_unless_drawn_otherwise)."""
     drawn = page = _first_read(ink, looks, expected)
     for trim, said in ((ends_driven_on, DRIVEN_ON), (lambda lines: led_in(lines, homes), LED_IN),
-                       (poked_through, POKED)):
+                       (lambda lines: poked_through(lines, len(expected)), POKED)):
         trimmed = None if _in_place(page.readings, expected) == len(expected) else \
             trim(page.writing.ink)
         if trimmed is None:
