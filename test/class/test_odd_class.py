@@ -250,14 +250,25 @@ def rows_of(out):
         return {row['id']: row for row in csv.DictReader(f)}
 
 
+def criteria(out, sid):
+    """Each criterion's points and words, as results.json has them, or ''."""
+    path = os.path.join(out, sid, 'results.json')
+    if not os.path.exists(path):
+        return ''
+    with open(path, encoding='utf-8') as f:
+        return '; '.join(f"{t['name']}: {t['score']:g}/{t['max_score']:g}: {t['output']}"
+                         for t in json.load(f)['tests'])
+
+
 def test_each_odd_submission_costs_its_own_row_and_says_why(graded):
     out, _, printed, _ = graded
     assert 'passed in' in printed, printed[-3000:]
     rows = rows_of(out)
     assert sorted(rows) == sorted(CONCLUSIONS), printed[-3000:]
     for sid, (drawn, verdict, words) in CONCLUSIONS.items():
-        assert (rows[sid]['drawn'], rows[sid]['verdict']) == (drawn, verdict), rows[sid]
-        assert words in rows[sid]['reason'], rows[sid]
+        said = f"{sid}: {rows[sid]['reason']}; {criteria(out, sid)}"
+        assert (rows[sid]['drawn'], rows[sid]['verdict']) == (drawn, verdict), said
+        assert words in rows[sid]['reason'], said
 
 
 def test_a_script_that_ends_with_its_last_move_is_seen_to_stand(graded):

@@ -50,6 +50,7 @@ def stop(grading, how):
     finally:
         if grading.poll() is None:
             os.killpg(grading.pid, signal.SIGKILL)
+            grading.wait()  # reaped: a zombie's pid is a grader still running to the next one
     return grading.returncode, time.monotonic() - sent, printed
 
 

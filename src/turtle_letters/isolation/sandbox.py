@@ -99,6 +99,7 @@ SAYS = {
                       f'together)',
 }
 PROBE = Caps(memory=GiB // 4, processes=64, cpu=10, disk=GiB // 64, files=1000)  # `problem`'s try
+TRIAL_SECONDS = 60     # for `problem`'s try to run `true` (it takes well under 1 s)
 FULL = 1 << 20          # bytes free under which its space counts as full
 _NUMBERS = itertools.count(1)
 COVERED = ('/tmp', '/root', '/home', '/run')     # the folders RULES covers with empty ones
@@ -176,8 +177,11 @@ def problem():
             return f'{tool} is not installed (make deps installs {package})'
     try:
         with Sandbox(PROBE, cpu=min(os.sched_getaffinity(0))) as box:
+            # its own session, as _run's, and bounded: on CI, two Ctrl-C
+            # as it ran once left the grader waiting here over 120 s
             tried = subprocess.run(box.inside(['true'], {}), stdout=subprocess.PIPE,
-                                   stderr=subprocess.STDOUT, universal_newlines=True)
+                                   stderr=subprocess.STDOUT, universal_newlines=True,
+                                   start_new_session=True, timeout=TRIAL_SECONDS)
         if tried.returncode != 0:
             return f'bubblewrap cannot make a sandbox here: {tried.stdout.strip()}'
     except CgroupError as e:
@@ -187,6 +191,8 @@ def problem():
     except subprocess.CalledProcessError as e:
         return f'no tmpfs or network namespace can be made here: ' \
                f'{e.stderr.strip() if e.stderr else e}'
+    except subprocess.TimeoutExpired:
+        return f'bubblewrap ran no command within {TRIAL_SECONDS} s: the sandbox is not usable here'
     return None
 
 

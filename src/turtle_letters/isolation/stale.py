@@ -53,11 +53,13 @@ def sweep():
     """Removes what graders no longer running left; says what, or ''."""
     namespaces, cgroups, scratches = left_behind()
     for namespace in namespaces:
-        subprocess.run(['ip', 'netns', 'delete', namespace], stderr=subprocess.DEVNULL)
+        subprocess.run(['ip', 'netns', 'delete', namespace], stderr=subprocess.DEVNULL,
+                       start_new_session=True)      # Ctrl-C is the grader's to act on
     remove_cgroups(cgroups)
     for folder in scratches:
         if os.path.ismount(folder):
-            subprocess.run(['umount', '--lazy', folder], stderr=subprocess.DEVNULL)
+            subprocess.run(['umount', '--lazy', folder], stderr=subprocess.DEVNULL,
+                           start_new_session=True)
         remove_tree(folder)
     found = sorted({int(_PID.match(os.path.basename(name)).group(1))
                     for name in namespaces + cgroups + scratches})
