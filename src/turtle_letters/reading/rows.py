@@ -22,7 +22,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
-from .ink import (box, closed, dash, flooded, inside, length, outline, samples, turned,
+from .ink import (box, boxed, closed, dash, flooded, inside, length, outline, samples, turned,
                   turns_along)
 from .forms import CLEAN, READABLE, candidates, templates
 from .recognition import (MOST_TILT, SAMPLE, TILTS, Reading, Unfinished, best_fit, plainly_other,
@@ -131,6 +131,15 @@ class Row:
                       if (start == 0 and stop == len(line)) or length([line[start:stop]]) >= nub]
         return parts
 
+    @functools.cached_property
+    def outlined(self):
+        """Whether a letter of the row set apart is drawn round its edge
+        (ink.outline), and not as a box: a block letter's outline. (The
+        recognition benchmark's DejaVu Sans Bold NI, its I stretched to a
+        box 0.51 as wide as high, read as the NO it was graded against.)"""
+        return any(outline(group) is not None and boxed(group) is None
+                   for group in apart(self.ink))
+
     def ink_near(self, x, within):
         """How many of the fine points lie within `within` of x across."""
         return sum(int(numpy.count_nonzero(numpy.abs(xs - x) < within)) for xs in self._across)
@@ -143,7 +152,9 @@ class Row:
         row's height, nor less than SHORT unless it fits within CLEAN (its
         best fit kept, for the report). (A name's later letters written
         small, 'Jo' or 'Ri', are its letters; the end of a curve beside a
-        whole letter is no I.)"""
+        whole letter is no I.) Nor does a box read where other letters of the
+        row are outlines (outlined): an outline O or D is two closed lines,
+        and a single box is an outline I stretched, wider than its band."""
         key = (tuple(tuple(tuple(p) for p in line) for line in part), letters, exact)
         if key not in self._readings:
             reading = read(part, letters, self.tilts)
@@ -153,7 +164,8 @@ class Row:
                 fits = {**fits, exact: alone}
             letter = reading.letter
             height = self.share(part)
-            if height < SMALL or (height < SHORT and reading.best.fit > CLEAN):
+            if height < SMALL or (height < SHORT and reading.best.fit > CLEAN) or \
+                    (letter not in (None, 'I') and boxed(part) is not None and self.outlined):
                 letter = None
             self._readings[key] = Reading(letter, reading.best, fits)
         return self._readings[key]

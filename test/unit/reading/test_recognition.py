@@ -365,6 +365,26 @@ def test_an_outline_row_with_fewer_letters_than_expected_reads_each_edge_once():
     assert ''.join(r.letter or '?' for r in read_row(ink, 'TELL')) == 'TEL'
 
 
+@pytest.mark.parametrize('width', [0.51, 0.8])
+def test_a_box_beside_outline_letters_is_no_o(width):
+    """A box one closed line, `width` of its height across, beside a block
+    H drawn round its edge: an outline O is two closed lines (its inner
+    edge), so the box is an outline I stretched (the recognition
+    benchmark's DejaVu Sans Bold NI, its I 0.51 as wide as high, was
+    credited as the NO it was graded against), or nothing; beside an H
+    drawn as strokes, the same box is the square O a cadet draws."""
+    w = 3 * width
+    corners = [(2.4, 0), (2.4 + w, 0), (2.4 + w, 3), (2.4, 3), (2.4, 0)]
+    edge = [[(1 + a[0] + (b[0] - a[0]) * i / 50, 2 + a[1] + (b[1] - a[1]) * i / 50)
+             for a, b in zip(corners, corners[1:]) for i in range(50)] + [(3.4, 2)]]
+    outlined = outline_row('H', 0) + edge
+    stroked = [[(1 + 2 * x, 2 + 3 * y) for x, y in stroke] for stroke in FONT['H'].strokes]
+    for tilt in (0, 20):
+        assert [r.letter for r in read_row(turned(outlined, tilt, (3, 3)), 'HO')] == ['H', None]
+        assert [r.letter for r in read_row(turned(stroked + edge, tilt, (3, 3)), 'HO')] == \
+            ['H', 'O']
+
+
 def test_a_letters_inner_edge_is_its_own_in_a_row_drawn_round_its_edges():
     square_o = [[(0, 0), (0, 3), (2, 3), (2, 0), (0, 0)],
                 [(0.6, 0.6), (0.6, 2.4), (1.4, 2.4), (1.4, 0.6), (0.6, 0.6)]]
