@@ -60,3 +60,22 @@ def test_the_core_given_holds_and_two_at_once_are_different_users():
                     ['Cpus_allowed_list:', '0', str(USER + 1)]]
     assert owners == [(USER, '0o700'), (USER + 1, '0o700')]
     assert leftovers(before) == ([], [])
+
+
+def test_a_trial_of_the_sandbox_that_never_ends_says_so_and_leaves_nothing(monkeypatch):
+    """The grader's trial of the sandbox (sandbox.problem) runs `true` in a
+    real one; here it runs `sleep 60` instead, which never ends in time:
+    the trial gives up in words, and its sandbox is removed whole (on CI,
+    a trial once kept the grader waiting over 120 s)."""
+    import time
+    from turtle_letters.isolation import sandbox
+    before = sandbox_processes()
+    inside = sandbox.Sandbox.inside
+    monkeypatch.setattr(sandbox.Sandbox, 'inside',
+                        lambda box, argv, env: inside(box, ['sleep', '60'], env))
+    monkeypatch.setattr(sandbox, 'TRIAL_SECONDS', 2)
+    started = time.monotonic()
+    assert sandbox.problem() == \
+        'bubblewrap ran no command within 2 s: the sandbox is not usable here'
+    assert time.monotonic() - started < 30
+    assert leftovers(before) == ([], [])
