@@ -384,15 +384,19 @@ def _accuracy(facts, rubric):
         return 0.0, f'not scored: {_letter(facts, rubric)[1]}'
     stray = strays(facts.writing or facts.drawing.strokes)     # the ink the letters were read in
     worst = max(stray.wobble, stray.gap / 2)
+    counted = max(len(_shapes(facts.readings)), len(facts.expected))
     share = min(1.0, max(0.0, (rubric.none - worst) / (rubric.none - rubric.full))) * \
-        len(right) / max(len(_shapes(facts.readings)), len(facts.expected))
+        len(right) / counted
+    # a share for each letter in place: the line says so, or a clean row's half is a riddle
+    part = f'; for {len(right)} of the {counted} letters, those in place' \
+        if len(right) < counted else ''
     gap = (f'a line misses itself by {100 * stray.gap:.1f}% where it comes back (counted half)'
            if stray.gap else 'its loops close')
     tilts = sorted({r.fits[e].tilt for r, e in right} - {0.0}, key=abs)
     tilted = f', drawn {abs(tilts[-1]):g} degrees off level' if tilts else ''
     return share, (f'its strokes stray {100 * stray.wobble:.1f}% of its height from the lines '
                    f'and arcs they draw, and {gap} (every point at {100 * rubric.full:g}% or '
-                   f'less, none from {100 * rubric.none:g}%){tilted}')
+                   f'less, none from {100 * rubric.none:g}%){tilted}{part}')
 
 
 def _ends(facts, rubric):

@@ -299,6 +299,9 @@ def test_initials_earn_each_letter_in_its_place():
     assert both[letter] == (25, 'drew AL, as expected') and both[accuracy][0] > 19
     assert half[letter] == (12.5, 'drew AL, expected AT: 1 in place')
     assert 9 < half[accuracy][0] <= 10
+    # half the accuracy of a clean row is explained where it is given
+    assert half[accuracy][1].endswith('; for 1 of the 2 letters, those in place')
+    assert 'letters, those in place' not in both[accuracy][1]
 
 
 def test_a_small_l_a_bare_stroke_is_not_credited_and_the_row_says_why():
