@@ -406,6 +406,14 @@ def _node(executable, i):
     return f'{stem}{i}' if stem[:1].isalpha() else f'n_{stem}{i}'
 
 
+def passed_over(launch, started, name):
+    """Why the package's `launch` file was passed over for its executables:
+    the packages whose nodes it `started`, none of them `name`."""
+    if not started:     # it may include another package's (gazebo_ros's world): no node of its own
+        return f'{launch} starts no node of {name}'
+    return f'{launch} starts nodes of {", ".join(started)} only, none of {name}'
+
+
 def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
     work, package = box.work, result.package
     names = [only] if only else executables(box, package)
@@ -417,9 +425,8 @@ def _launch_and_watch(box, limits, result, only=None, unbuilt=False):
         result.executables, result.generated = names, ', '.join(names) or 'none'
         result.unstartable = {name: program for name, program in
                               unstartable(_copied(box, package)).items() if name in names}
-        result.passed_over = package.launch and (f'{package.launch} starts nodes of '
-                                                 f'{", ".join(started) or "no package"} only, '
-                                                 f'none of {package.name}')
+        result.passed_over = package.launch and passed_over(package.launch, started,
+                                                            package.name)
     # Sourced first: the stand-in's workspace goes before the package's own.
     # Unbuilt, the package is found in its source folder, as rosrun finds scripts.
     setup = ('export ROS_PACKAGE_PATH="$0/ws/src:$ROS_PACKAGE_PATH"' if unbuilt else

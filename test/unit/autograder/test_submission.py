@@ -5,6 +5,7 @@ from turtle_letters.autograder import submission
 from support.grading import nest
 from turtle_letters.isolation.files import remove_tree
 from turtle_letters.autograder.submission import copy, find
+from turtle_letters.autograder.session import passed_over
 
 PACKAGE = '<package format="2"><name>{}</name></package>'
 LAB = ('<launch><node pkg="turtlesim" type="turtlesim_node" name="sim"/>'
@@ -76,6 +77,22 @@ def test_a_bag_replayed_or_a_graph_drawn_is_no_controller(tmp_path):
                     'hw/scripts/letters.sh': '#!/bin/bash\nrosservice call /clear\n'})
     assert submission.started_packages(find(str(tmp_path))) == (['hw', 'turtlesim'], True)
     assert submission.bare_shell(package.folder) == []
+
+
+def test_a_launch_file_of_no_node_of_its_own_is_passed_over_in_plain_words(tmp_path):
+    """A real class's launch file that only includes Gazebo's empty world:
+    it starts no node the grader can see, and the row said it started
+    "nodes of no package only"."""
+    world = ('<launch><include file="$(find gazebo_ros)/launch/empty_world.launch">'
+             '<arg name="world_name" value="$(find hw)/worlds/happy.world"/></include></launch>')
+    make(tmp_path, {'hw/package.xml': PACKAGE.format('hw'), 'hw/launch/happy.launch': world,
+                    'hw/scripts/letters.sh': 'rosservice call /clear\n'})
+    package = find(str(tmp_path))
+    started, _ = submission.started_packages(package)
+    assert passed_over(package.launch, started, package.name) == \
+        'launch/happy.launch starts no node of hw'
+    assert passed_over('launch/turtle.launch', ['turtlesim'], 'hw') == \
+        'launch/turtle.launch starts nodes of turtlesim only, none of hw'
 
 
 def test_no_package_no_name_no_launch_file(tmp_path):
