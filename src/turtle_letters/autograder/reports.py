@@ -14,7 +14,7 @@ from typing import List, NamedTuple, Optional
 from ..isolation.files import safe_name, shown
 from ..reading.ocr import said as ocr_said
 from .observations import Drawing
-from .rubric import Grade, credited, drawn, nearest_only
+from .rubric import Grade, credited, credited_as_small_l, drawn, nearest_only
 
 NOT_GRADED = 'not graded'
 CSV_COLUMNS = ['id', 'name', 'expected', 'drawn', 'score', 'max_score', 'verdict', 'reason']
@@ -178,8 +178,9 @@ def overlay(facts):
     (no strokes) where no form of it reads; one read but not expected."""
     right = credited(facts)
     letters = [(e, r.fits[e].strokes) if r.letter == e else
+               ('l', r.best.strokes) if credited_as_small_l(r, e) else
                (f'{e} (OCR)', r.fits[e].strokes if r.fits[e].fit <= r.fits[e].readable else [])
-               for r, e in right if e in r.fits]
+               for r, e in right if e in r.fits or credited_as_small_l(r, e)]
     nearest = nearest_only(facts)
     return letters + [(f'{r.letter}{" nearest" if r is nearest else ""}: not expected',
                        r.best.strokes) for r in facts.readings

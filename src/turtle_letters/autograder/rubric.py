@@ -8,13 +8,18 @@ import yaml
 from ..isolation.files import shown
 from ..reading.cleanness import strays
 from ..reading.forms import CLEAN
-from ..reading.ink import LONGEST, box, flooded
+from ..reading.ink import LONGEST, box, flooded, turned
 from ..reading.ocr import OcrReading, said as ocr_said, supports
 from ..reading.recognition import Reading
 from .observations import Drawing, chatter_peak, own_triggers
 from .roster import EXPECTED
 
 CHATTER_FLOOD = 100     # messages a second on /chatter past which the talker floods it
+# A bare stroke past a row's first letter, standing this share as high as its tallest
+# letter or more, is the small l the roster expects there: a name's later letters are
+# written small (nine of a real class of sixteen did), and an l is one tall stroke,
+# an i's stem half as tall (a real class's Al, for Alexander, read AI and failed).
+SMALL_L = 0.8
 
 
 class RubricError(ValueError):
@@ -253,9 +258,48 @@ def by_ocr(facts):
 
 
 def drawn_text(facts):
-    """The letters drawn, as the row gives them: the strokes' reading, or
-    OCR's where it credits them."""
-    return facts.ocr.text if by_ocr(facts) else drawn(facts.readings)
+    """The letters drawn, as the row gives them: the strokes' reading (a
+    small l as 'l', _small_l_at), or OCR's where it credits them."""
+    return facts.ocr.text if by_ocr(facts) else _as_read(facts)
+
+
+def _as_read(facts):
+    """The strokes' letters, each I that is the small l expected in its place as 'l'."""
+    shapes = _shapes(facts.readings)
+    return ''.join('l' if _small_l_at(shapes, k, facts.expected) else r.letter or '?'
+                   for k, r in enumerate(shapes))
+
+
+def _small_l_at(shapes, k, expected):
+    """Whether reading k of `shapes` (_shapes) is the small l `expected`
+    has there: past the first letter (a capital), read as an I within CLEAN
+    of one straight stroke (a serif I's bars are no l's), and standing
+    SMALL_L as high as the row's tallest letter or more. The ink is an I's
+    as much: the roster says which was meant, as a TA reads it."""
+    reading = shapes[k]
+    if not 0 < k < len(expected) or expected[k] != 'L' or reading.letter != 'I' or \
+            reading.best.fit > CLEAN or [len(s) for s in reading.best.strokes] != [2]:
+        return False
+    return _height(reading) >= SMALL_L * max(_height(r) for r in shapes)
+
+
+def _height(reading):
+    """How high the letter read stands, turned back by its tilt: its best fit's
+    strokes lie on the ink's box."""
+    points = [p for line in turned(reading.best.strokes, -reading.best.tilt, (0.0, 0.0))
+              for p in line]
+    return box(points)[3] if points else 0.0
+
+
+def credited_as_small_l(reading, letter):
+    """Whether a credited (reading, letter) is a small l (_small_l_at): an I
+    credited as an L (OCR credits no letter the strokes read as another)."""
+    return reading.letter == 'I' and letter == 'L'
+
+
+def fit_of(reading, letter):
+    """The Fit a credited `letter` is judged by: its own, or a small l's, the I's."""
+    return reading.best if credited_as_small_l(reading, letter) else reading.fits[letter]
 
 
 def credited(facts):
@@ -270,7 +314,8 @@ def _right(facts):
     shapes = _shapes(facts.readings)
     if by_ocr(facts) and len(shapes) == len(facts.expected):
         return list(zip(shapes, facts.expected))
-    return [(r, e) for r, e in zip(shapes, facts.expected) if r.letter == e]
+    return [(r, e) for k, (r, e) in enumerate(zip(shapes, facts.expected))
+            if r.letter == e or _small_l_at(shapes, k, facts.expected)]
 
 
 def letter_line(facts):
@@ -324,19 +369,20 @@ def _letter_read(facts, _):
     if len(read) == 1 and read[0].letter is None:
         return 0.0, (f'no letter reads from the path (closest: {read[0].best.letter}, '
                      f'{100 * read[0].best.fit:.0f}% of its height off)') + _cut_short(facts)
-    text = drawn(read)
+    text = _as_read(facts)
     if not facts.expected:
         return 0.0, (f'drew {text}, but no letter is expected: give it in the roster (its '
                      f'letter column, or a name)')
     right = len(_right(facts))
-    if text == facts.expected:
-        return 1.0, f'drew {text}, as expected'
+    said_l = _small_l_said(text, facts.expected)
+    if text.upper() == facts.expected:
+        return 1.0, f'drew {text}, as expected{said_l}'
     wrong = f'drew {text}, expected {facts.expected}'
-    small_l = _small_l(text, facts.expected) + _cut_short(facts)
+    said_l += _cut_short(facts)
     if len(facts.expected) == 1:
         loose = nearest_only(facts)
-        return 0.0, (_nearest(loose, facts.expected) if loose else wrong) + small_l
-    return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place{small_l}'
+        return 0.0, (_nearest(loose, facts.expected) if loose else wrong) + said_l
+    return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place{said_l}'
 
 
 def nearest_only(facts):
@@ -364,13 +410,14 @@ def _cut_short(facts):
     return f'; {facts.waiting}' if facts.waiting else ''
 
 
-def _small_l(text, expected):
-    """Why an L read as an I is not credited: a small l is one bare stroke,
-    an I's form as much as an l's (a real class's Al), and no stroke tells
-    which was meant."""
+def _small_l_said(text, expected):
+    """Words for an L expected and read as a small l (_small_l_at), or read as
+    an I that is none (the first letter, a serif I, a short stroke)."""
+    if 'l' in text:
+        return '; its l one bare stroke, as a small l is written'
     if any(t == 'I' and e == 'L' for t, e in zip(text, expected)):
-        return ('; the L reads as an I: a small l, one bare stroke, is as much an I, so it is '
-                'not credited (a capital L reads)')
+        return ('; the L reads as an I: a small l is credited past the first letter, one bare '
+                f'stroke at least {SMALL_L:.0%} as high as the row (a capital L reads)')
     return ''
 
 
@@ -392,7 +439,7 @@ def _accuracy(facts, rubric):
         if len(right) < counted else ''
     gap = (f'a line misses itself by {100 * stray.gap:.1f}% where it comes back (counted half)'
            if stray.gap else 'its loops close')
-    tilts = sorted({r.fits[e].tilt for r, e in right} - {0.0}, key=abs)
+    tilts = sorted({fit_of(r, e).tilt for r, e in right} - {0.0}, key=abs)
     tilted = f', drawn {abs(tilts[-1]):g} degrees off level' if tilts else ''
     return share, (f'its strokes stray {100 * stray.wobble:.1f}% of its height from the lines '
                    f'and arcs they draw, and {gap} (every point at {100 * rubric.full:g}% or '

@@ -7,7 +7,9 @@ import re
 import pytest
 
 from turtle_letters.autograder.observations import Drawing
-from turtle_letters.autograder.rubric import CRITERIA, Facts, Limits, RubricError, grade, load
+from turtle_letters.autograder.rubric import (CRITERIA, Facts, Limits, RubricError, credited,
+                                             grade, load)
+from turtle_letters.autograder.reports import overlay
 from turtle_letters.autograder.session import Step
 from turtle_letters.reading.cleanness import strays
 from turtle_letters.reading.ocr import read_text
@@ -304,14 +306,34 @@ def test_initials_earn_each_letter_in_its_place():
     assert 'letters, those in place' not in both[accuracy][1]
 
 
-def test_a_small_l_a_bare_stroke_is_not_credited_and_the_row_says_why():
+def test_a_bare_stroke_past_the_first_letter_is_the_small_l_the_roster_expects():
+    """A real class's Al, for Alexander (an arched A, then one green stroke
+    as tall), read AI and failed: a TA reads a small l, as the roster says.
+    The stroke is an I's as much, so only where it is an l's shape: past
+    the first letter, one bare stroke, as tall as the row (an i's stem is
+    half as tall); a serif I, or a first letter, is an I."""
     a = [(1.0, 1.0), (1.6, 3.0), (2.2, 1.0)], [(1.2, 1.7), (2.0, 1.7)]
-    small_l = [(3.0, 1.0), (3.0, 3.0)]
-    graded = scores_of(grade(facts(Drawing([*a, small_l], 1.0, 5.0, 90, []), expected='AL'),
-                             load(DEFAULT)))
-    assert graded['The letter drawn is the expected one'] == (
-        12.5, 'drew AI, expected AL: 1 in place; the L reads as an I: a small l, one bare '
-              'stroke, is as much an I, so it is not credited (a capital L reads)')
+    rubric, letter = load(DEFAULT), 'The letter drawn is the expected one'
+
+    def graded(strokes, expected='AL'):
+        read = facts(Drawing(strokes, 1.0, 5.0, 90, []), expected=expected)
+        return scores_of(grade(read, rubric)), [e for _, e in credited(read)], overlay(read)
+    tall, credits, shown = graded([*a, [(3.0, 1.0), (3.0, 3.0)]])
+    assert tall[letter] == (25, 'drew Al, as expected; its l one bare stroke, as a small l is '
+                                'written')
+    assert credits == ['A', 'L'] and tall['Its accuracy'][0] > 19
+    assert [label for label, _ in shown] == ['A', 'l']     # the picture names it as read
+    short, credits, _ = graded([*a, [(3.0, 1.0), (3.0, 2.0)]])
+    assert short[letter] == (12.5, 'drew AI, expected AL: 1 in place; the L reads as an I: a '
+                                   'small l is credited past the first letter, one bare '
+                                   'stroke at least 80% as high as the row (a capital L reads)')
+    assert credits == ['A']
+    serif, _, _ = graded([*a, [(2.8, 3.0), (3.2, 3.0)], [(3.0, 3.0), (3.0, 1.0)],
+                          [(2.8, 1.0), (3.2, 1.0)]])
+    assert serif[letter][0] == 12.5 and serif[letter][1].startswith('drew AI, expected AL')
+    first, _, _ = graded([[(3.0, 1.0), (3.0, 3.0)], *[[(x + 2.6, y) for x, y in s] for s in a]],
+                         expected='LA')
+    assert first[letter][0] == 12.5 and first[letter][1].startswith('drew IA, expected LA')
 
 
 def test_a_tilted_letter_is_read_and_its_tilt_said():
