@@ -124,7 +124,7 @@ def read(drawing, expected):
         return Page([], Writing([], []), ''), None
     page = read_page(drawing.strokes, drawing.looks, expected, drawing.homes)
     page = page._replace(readings=told_apart(page.writing.ink, page.readings))
-    if rubrics.drawn(page.readings) == expected:
+    if rubrics.as_read(page.readings, expected).upper() == expected:    # a small l is an L
         return page, None
     return page, read_text(page.writing.ink, expected)
 

@@ -260,13 +260,14 @@ def by_ocr(facts):
 def drawn_text(facts):
     """The letters drawn, as the row gives them: the strokes' reading (a
     small l as 'l', _small_l_at), or OCR's where it credits them."""
-    return facts.ocr.text if by_ocr(facts) else _as_read(facts)
+    return facts.ocr.text if by_ocr(facts) else as_read(facts.readings, facts.expected)
 
 
-def _as_read(facts):
-    """The strokes' letters, each I that is the small l expected in its place as 'l'."""
-    shapes = _shapes(facts.readings)
-    return ''.join('l' if _small_l_at(shapes, k, facts.expected) else r.letter or '?'
+def as_read(readings, expected):
+    """The strokes' letters, each I that is the small l `expected` has in
+    its place as 'l' ('?' for ink no letter fits)."""
+    shapes = _shapes(readings)
+    return ''.join('l' if _small_l_at(shapes, k, expected) else r.letter or '?'
                    for k, r in enumerate(shapes))
 
 
@@ -369,7 +370,7 @@ def _letter_read(facts, _):
     if len(read) == 1 and read[0].letter is None:
         return 0.0, (f'no letter reads from the path (closest: {read[0].best.letter}, '
                      f'{100 * read[0].best.fit:.0f}% of its height off)') + _cut_short(facts)
-    text = _as_read(facts)
+    text = as_read(facts.readings, facts.expected)
     if not facts.expected:
         return 0.0, (f'drew {text}, but no letter is expected: give it in the roster (its '
                      f'letter column, or a name)')
