@@ -129,6 +129,18 @@ def test_read_takes_each_pen_colour_for_a_letter_where_there_are_as_many_as_expe
     assert [r.letter for r in driver.read(together, 'MO')[0].readings] != ['M', 'O']
 
 
+def test_ocr_reads_only_a_row_the_strokes_do_not_read_as_expected_a_small_l_an_l():
+    """The read stage asks OCR, the slower reader, only where the strokes
+    do not read the letters expected; an A and a bare stroke as tall read
+    as the Al expected (rubric's small l): OCR is not asked, and the row
+    does not say what it would have read (a real class's Al said 'OCR
+    reads A (0% sure)' beside its credit). Expected AT, it is asked."""
+    a = [[(1.0, 1.0), (1.6, 3.0), (2.2, 1.0)], [(1.2, 1.7), (2.0, 1.7)], [(3.0, 1.0), (3.0, 3.0)]]
+    drawing = Drawing(a, 1.0, 5.0, 90, [])
+    assert driver.read(drawing, 'AL')[1] is None
+    assert driver.read(drawing, 'AT')[1] is not None
+
+
 def test_letters_read_in_one_line_of_writing_are_graded_there_and_the_row_says_so():
     """The read and score stages: SNB above 002 inside a border (a real
     class's snb.py), in pens as the simulator recorded them. The letters
