@@ -11,6 +11,7 @@ from ..reading.forms import CLEAN
 from ..reading.ink import LONGEST, box, flooded, turned
 from ..reading.ocr import OcrReading, said as ocr_said, supports
 from ..reading.recognition import Reading
+from ..reading.rows import BARE
 from .observations import Drawing, chatter_peak, own_triggers
 from .roster import EXPECTED
 
@@ -274,22 +275,25 @@ def as_read(readings, expected):
 def _small_l_at(shapes, k, expected):
     """Whether reading k of `shapes` (_shapes) is the small l `expected`
     has there: past the first letter (a capital), read as an I within CLEAN
-    of one straight stroke (a serif I's bars are no l's), and standing
-    SMALL_L as high as the row's tallest letter or more. The ink is an I's
-    as much: the roster says which was meant, as a TA reads it."""
+    of a form narrower than BARE of its height (a bare stroke, upright or
+    slanted; a serif I's bars are no l's), and standing SMALL_L as high as
+    the row's tallest letter or more. The ink is an I's as much: the roster
+    says which was meant, as a TA reads it."""
     reading = shapes[k]
     if not 0 < k < len(expected) or expected[k] != 'L' or reading.letter != 'I' or \
-            reading.best.fit > CLEAN or [len(s) for s in reading.best.strokes] != [2]:
+            reading.best.fit > CLEAN:
         return False
-    return _height(reading) >= SMALL_L * max(_height(r) for r in shapes)
+    width, height = _size(reading)
+    return width < BARE * height and \
+        height >= SMALL_L * max(_size(r)[1] for r in shapes)
 
 
-def _height(reading):
-    """How high the letter read stands, turned back by its tilt: its best fit's
-    strokes lie on the ink's box."""
+def _size(reading):
+    """(width, height) of the letter read, turned back by its tilt: its best
+    fit's strokes lie on the ink's box."""
     points = [p for line in turned(reading.best.strokes, -reading.best.tilt, (0.0, 0.0))
               for p in line]
-    return box(points)[3] if points else 0.0
+    return box(points)[2:] if points else (0.0, 0.0)
 
 
 def credited_as_small_l(reading, letter):
