@@ -32,23 +32,29 @@ _ARCH = [(0.3 - 0.3 * math.cos(math.radians(a)), 0.7 + 0.3 * math.sin(math.radia
          for a in range(0, 181, 15)]      # an A's round top
 _CURL = _round((0.27, 0.27), 0.23, 0, -225)     # a J's hook, on past its half circle
 _BOWL = _round((0.45, 0.55), 0.45, 0, 360)     # a small a's round bowl, from its right, once round
+_HUMP = 0.3     # a turtle's small m: the radius of its arches, of its height
+_SMALL_M = [(0, 0), (0, 1 - _HUMP)] + _round((_HUMP, 1 - _HUMP), _HUMP, 180, 0)[1:] + \
+    [(2 * _HUMP, 0), (2 * _HUMP, 1 - _HUMP)] + _round((3 * _HUMP, 1 - _HUMP), _HUMP, 180, 0)[1:] + \
+    [(4 * _HUMP, 0)]      # up, over an arch, down the middle leg and back up, over, down
 # a B of one loop: up its straight back, round its top bowl to a point inside, round the bottom
 _LOOP_B = [(0, 0.27)] + _round((0.27, 0.73), 0.27, 180, -75) + \
     _round((0.27, 0.27), 0.27, 75, -180)
 # How cadets draw letters with rotate and move, beside the font's glyphs:
 # square corners, a K's arms meeting at the stem's middle (or stopping short
 # of its corners, a real class's Ko), an A's bar from a quarter to half its
-# height (or its top an arch, a real class's Al), an N with level feet, M
-# and N as zigzags (a real class's MF), an I of one stroke, a J barred
-# across its top (two other classes' Jo, one with its hook curled on up), a
-# small a as a turtle draws it, a round bowl and a stem down its right side
-# from the bowl's middle (a real class's Ma and Ca; futural's a has its stem
-# from the top), an R of a stem, a round bowl half its height and a leg from
-# the stem (a real class's R; the mirror of one fit a script R as well as
-# it did: recognition.MIRRORED), a B of a stem and two round bowls (a gothic
-# L fit one with its bar run on past its stem nearer than any B). A
-# square-cornered O is an O: no D is drawn with four right angles. (The
-# recognition benchmark draws each letter's last form here as a cadet's.)
+# height (or its top an arch, a real class's Al), an N with level feet, M and
+# N as zigzags (a real class's MF), an I of one stroke, a J barred across its
+# top (two other classes' Jo, one with its hook curled on up), a small a as a
+# turtle draws it, a round bowl and a stem down its right side from the bowl's
+# middle (a real class's Ma and Ca; futural's a has its stem from the top), a
+# small m of two round arches on three legs (a real class's m, which futural's
+# flatter m fit 8 to 9% of its height off), an R of a stem, a round bowl half
+# its height and a leg from the stem (a real class's R; the mirror of one fit
+# a script R as well as it did: recognition.MIRRORED), a B of a stem and two
+# round bowls (a gothic L fit one with its bar run on past its stem nearer
+# than any B). A square-cornered O is an O: no D is drawn with four right
+# angles. (The recognition benchmark draws each letter's last form here as a
+# cadet's.)
 VARIANTS: List[Tuple[str, List[List[Point]]]] = [
     ('A', [_BOWL + [(0.9, 0)]]),                    # a small a: its bowl, then down
     ('A', [[(0.9, 0)] + _BOWL[:19]]),               # ... up, then round three quarters
@@ -68,6 +74,7 @@ VARIANTS: List[Tuple[str, List[List[Point]]]] = [
                                 (0, 0.2)]]),                              # barred, a real class's
     ('K', [[(0, 1), (0, 0)], [(0.55, 0.9), (0, 0.5), (0.6, 0.25)]]),    # arms short
     ('K', [[(0, 1), (0, 0)], [(0.6, 1), (0, 0.5), (0.6, 0)]]),
+    ('M', [_SMALL_M]),       # before the capitals: a cadet's M (the last) stays one
     ('M', [[(0, 0), (0, 1), (0.35, 0), (0.7, 1), (0.7, 0)]]),
     ('M', [[(0, 0), (0.175, 1), (0.35, 0), (0.525, 1), (0.7, 0)]]),     # a zigzag, no upright
     ('N', [[(0, 0), (0, 1), (0.6, 0), (0.6, 1)]]),
