@@ -2,8 +2,10 @@
 strokes in grey, recorded paths in colour, each vertex enlarged in a box
 of its own; and the whole canvas) and the class grader's (a student's ink
 as turtlesim drew it, the letters read over it)."""
+import contextlib
 import math
 import os
+import tempfile
 
 os.environ.setdefault('QT_QPA_PLATFORM', 'offscreen')
 from PyQt5.QtCore import QPointF, QRectF, Qt  # noqa: E402
@@ -20,8 +22,14 @@ _APPLICATION = []      # kept: Qt's application must outlive every painting
 def application():
     """Qt's application, which painting needs: made once, in the thread
     that first asks (the main one: the class grader asks before its
-    students' threads paint, each on a QImage of its own)."""
+    students' threads paint, each on a QImage of its own). Where the
+    login set no runtime folder (root over ssh, `env -i`), the one Qt
+    would pick is made first, or Qt warns on the instructor's terminal."""
     if not _APPLICATION:
+        runtime = os.environ.setdefault(
+            'XDG_RUNTIME_DIR', os.path.join(tempfile.gettempdir(), f'runtime-{os.getuid()}'))
+        with contextlib.suppress(OSError):      # not made: Qt only warns
+            os.makedirs(runtime, mode=0o700, exist_ok=True)
         _APPLICATION.append(QApplication.instance() or QApplication([]))
     return _APPLICATION[0]
 

@@ -3,6 +3,8 @@ drew it, every turtle's in its own colour and width, on the canvas's own
 colour, and only the letters read drawn over it. Read back pixel by pixel."""
 import math
 import os
+import subprocess
+import sys
 import threading
 
 os.environ.setdefault('QT_QPA_PLATFORM', 'offscreen')
@@ -156,3 +158,18 @@ def test_pictures_painted_in_several_threads_at_once_are_those_painted_in_the_ma
         thread.join()
     expected = QImage(main)
     assert all(QImage(path) == expected for path in paths)
+
+
+def test_painting_from_a_login_without_a_runtime_folder_warns_of_nothing():
+    """Graded from a root shell over ssh, no XDG_RUNTIME_DIR set, Qt warned
+    on the instructor's terminal ("QStandardPaths: XDG_RUNTIME_DIR not
+    set") as the grader made its first picture."""
+    src = os.path.join(os.path.dirname(__file__), '..', '..', '..', 'src')
+    env = {k: v for k, v in os.environ.items() if k != 'XDG_RUNTIME_DIR'}
+    env['PYTHONPATH'] = os.pathsep.join([src] + env.get('PYTHONPATH', '').split(os.pathsep))
+    painted = subprocess.run(
+        [sys.executable, '-c', 'from turtle_letters.grading.picture import application; '
+                               'application()'],
+        env=env, capture_output=True, text=True, timeout=120)
+    assert painted.returncode == 0, painted.stderr
+    assert 'XDG_RUNTIME_DIR' not in painted.stderr
