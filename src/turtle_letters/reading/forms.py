@@ -27,9 +27,10 @@ def _round(centre, radius, start, end):
 
 
 def _arches(count, height, hump=0.3):
-    """A turtle's small n (`count` 1) or m (2), `height` high, each arch's
-    radius `hump` of that: up its first leg, over an arch, down the next
-    leg (and back up it to the next arch)."""
+    """`count` round arches side by side, `height` high, each arch's radius
+    `hump` of that: up the first leg, over an arch, down the next leg (and
+    back up it to the next arch): a turtle's small m (2), and an h's lower
+    half (1)."""
     radius = hump * height
     legs = height - radius
     path = [(0, 0)]
