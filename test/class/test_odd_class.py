@@ -115,11 +115,13 @@ CONCLUSIONS = {
     'o5_turtlesim': ('', 'fail', 'its only package is named turtlesim, as the simulator is'),
     'h7_printer': ('', 'fail', 'catkin_make failed: error:'),
     'o2_M\ufffdller': ('L', 'fail', 'no letter is expected'),
-    'o6_three': ('N', 'pass', 'together, then n_controller.py alone in a fresh world'),
+    # spin_forever.py and n_controller.py drive turtle1 at once: stopped, as a TA stops them
+    'o6_three': ('N', 'pass', 's into the drawing: stopped there), then n_controller.py alone '
+                              'in a fresh world'),
     'o19_passed_over': ('N', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none '
                                      'of lab_one: the grader started its executables (keyboard.py, '
-                                     'n_controller.py, spin_forever.py) together, then '
-                                     'n_controller.py alone in a fresh world'),
+                                     'n_controller.py, spin_forever.py) together (they drove '
+                                     'turtle1 at once'),
     'o7_siblings': ('L', 'pass', 'every criterion met'),
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
     'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none of '

@@ -29,6 +29,7 @@ INK = 1e-6          # m: a segment shorter than this is a pen turned in place, n
 SCRIPT_PAUSE = 4
 BACKGROUND = DEFAULT_BACKGROUND     # the grader's simulator's, until a clear or reset says
 FULLEST = 3         # canvases a drawing that never ended wiped, read at most (the fullest)
+COMMAND_TIMEOUT = 1.0   # s turtlesim follows a command for, unless another comes (the contract)
 
 
 class Drawing(NamedTuple):
@@ -336,6 +337,27 @@ def actors(record):
     """The nodes that commanded a turtle or changed the world by a call,
     as the grader's simulator told it (its `by` lines)."""
     return {e['node'] for e in record if e['k'] == 'by'}
+
+
+def fight(record, since):
+    """(t, turtle) where, after `since`, a turtle first took commands from
+    two nodes within COMMAND_TIMEOUT of each other, both still driving it
+    as turtlesim obeys a command (the senders its `cmd` lines name); else
+    None. A package's executables started together that fight so draw no
+    letter: a TA stops them and runs each alone (a real class's two
+    scripts of `rostopic pub -1` lines ran 40 to 115 s together)."""
+    start = len(record)
+    while start and record[start - 1]['t'] >= since:   # the record is in time order
+        start -= 1
+    latest = {}     # turtle: {node: t of its latest command}
+    for e in record[start:]:
+        if e['k'] != 'cmd':
+            continue
+        senders = latest.setdefault(e['turtle'], {})
+        senders.update((node, e['t']) for node in e.get('by', ()))
+        if sum(e['t'] - t <= COMMAND_TIMEOUT for t in senders.values()) > 1:
+            return e['t'], e['turtle']
+    return None
 
 
 def one_driver(record):

@@ -87,6 +87,7 @@ class Facts(NamedTuple):
     writing: Optional[list] = None  # the ink the letters were read in, if not all the canvas's
     where: str = ''                 # ... which of the canvas's writing that is, in words
     waiting: str = ''               # where a script stops at a rostopic pub that never exits
+    fought: str = ''                # how the executables started together fought (session.Run)
 
     @classmethod
     def never_ran(cls, expected, problem):
@@ -102,7 +103,7 @@ class Facts(NamedTuple):
             build=run.build, launch=run.launch, waited=run.waited, talker=run.talker,
             stuck=run.stuck, limit=run.limit, own_triggers=own_triggers(run.events),
             chatter_peak=chatter_peak(run.events), broken=run.broken, limit_s=run.limit_s,
-            waiting=run.waiting)
+            waiting=run.waiting, fought=run.fought)
 
     @classmethod
     def of_drawing(cls, expected, drawing, page, ocr):
@@ -458,6 +459,8 @@ def _ends(facts, rubric):
     if d is None or d.started is None:
         return 0.0, 'the turtle never moved after the trigger' + (
             f': {facts.stuck}' if facts.stuck else '')
+    if d.ended is None and facts.fought:
+        return 0.0, f'{facts.fought}, and the grader stopped them: the drawing never ended'
     if d.ended is None:
         limit = round(facts.limit_s or rubric.limits.drawing, 1)
         shared = (f' (run alone, with what was left of the {rubric.limits.drawing:g} s the '

@@ -72,6 +72,7 @@ class Run:
         self.limit_s = None     # s the drawing was watched for at most (limits.drawing)
         self.script_until = None    # t a shell script it started was last seen running
         self.waiting = ''       # where a script it started stops at a rostopic pub, in words
+        self.fought = ''        # how the executables started together fought, if they did
 
     def watched_for(self):
         """s the drawing was watched for, from the trigger (or the launch) on."""
@@ -343,10 +344,11 @@ def alone(first: Run, name, limits: Limits, box: Sandbox) -> Run:
     result.build, result.log = first.build, list(first.log)
     _launch_and_watch(box, limits, result, only=name)
     if result.launch is not None:      # why the first run started them, as it said
+        stopped = f' ({first.fought}: stopped there)' if first.fought else ''
         result.launch = Step(False, f'{first.passed_over or "no launch file"}: the grader '
-                                    f'started its executables ({first.generated}) together, '
-                                    f'then {name} alone in a fresh world, as a TA '
-                                    f'would{result.fell_short}')
+                                    f'started its executables ({first.generated}) '
+                                    f'together{stopped}, then {name} alone in a fresh world, '
+                                    f'as a TA would{result.fell_short}')
     return result
 
 
@@ -457,7 +459,8 @@ def started_instead(run):
     of a `run` of the executables the grader started for want of a launch
     file that starts them: how it came to, the scripts run with python3 or
     bash (_run_with), and what the lab said where it did not come up (a node
-    that died is the student's to mend, whoever started it). The launch
+    that died is the student's to mend, whoever started it), and where they
+    fought over a turtle, that the grader stopped them (_fought). The launch
     file the grader writes starts no turtlesim: the grader runs its own."""
     fell_short = '' if run.launch.ok or run.launch.says == NO_TURTLESIM else \
         f'; {run.launch.says}'
@@ -466,7 +469,8 @@ def started_instead(run):
            f'as a TA would' if run.passed_over else
            f'no launch file: the grader started its executables ({run.generated}) as a launch '
            f'file would')
-    return fell_short, Step(False, how + fell_short)
+    stopped = f'; {run.fought}: the grader stopped them' if run.fought else ''
+    return fell_short, Step(False, how + fell_short + stopped)
 
 
 def _run_with(unstartable):
@@ -540,8 +544,9 @@ def _watch(lab, limits, result):
     since = result.since = asked or seen.looked_for_from(record, started, result.trigger)
     result.limit_s = limits.drawing
     if wait_until(lambda: seen.moved(record, since), limits.start, alive):
-        wait_until(lambda: _stood(record, since, limits.settle, scripts), limits.drawing, alive)
-        if terminal.process.poll() is not None:
+        wait_until(lambda: _fought(result, record, since) or
+                   _stood(record, since, limits.settle, scripts), limits.drawing, alive)
+        if not result.fought and terminal.process.poll() is not None:
             # roslaunch ended with its last node (a script of `rostopic pub -1`s): the
             # turtle's last command plays out, and it is seen to stand
             wait_until(lambda: _stood(record, since, limits.settle, scripts), limits.settle + 1,
@@ -645,6 +650,18 @@ def _started_scripts(result, work):
         return copied, result.executables
     return copied, [kind for _, kind in nodes(os.path.join(copied, result.package.launch),
                                               {result.package.name: copied})]
+
+
+def _fought(result, record, since):
+    """Whether the executables the grader started together drove one turtle
+    at once (seen.fight), as a TA watching stops them; result.fought says so.
+    Only the last few seconds are looked at: the record grows as it is watched."""
+    recent = max(since, time.monotonic() - 3 * seen.COMMAND_TIMEOUT)
+    found = len(result.executables) > 1 and seen.fight(record, recent)
+    if found:
+        t, turtle = found
+        result.fought = f'they drove {turtle} at once {t - since:.0f} s into the drawing'
+    return bool(found)
 
 
 def _stood(record, since, settle, scripts):

@@ -3,7 +3,7 @@ ink counts (the grader's simulator's record), and who triggered it."""
 import pytest
 
 from turtle_letters.autograder.observations import (SCRIPT_PAUSE, chatter_peak, drawing, drew,
-                                                   looked_for_from, moved, one_driver,
+                                                   fight, looked_for_from, moved, one_driver,
                                                    own_triggers, stood_for, strokes, roles,
                                                    trigger, unheard, unprompted)
 
@@ -175,6 +175,32 @@ def test_the_commands_counted_while_the_turtle_drew():
     counts = [dict(k='cmd', t=t, turtle='turtle1', n=10) for t in (0.5, 1.5, 1.9, 4.0)]
     merged = sorted(record + counts, key=lambda e: e['t'])
     assert drawing(merged, [graph()], since=0.5, settle=2.0, until=9.0).commands == 20
+
+
+def sent(t, turtle, *nodes):
+    return dict(k='cmd', t=t, turtle=turtle, n=len(nodes), by=sorted(nodes))
+
+
+def test_two_nodes_driving_one_turtle_within_turtlesims_command_timeout_fight():
+    """Two scripts of `rostopic pub -1` lines started together, each line a
+    node of its own, 3 s apart in a script: their commands to turtle1 come
+    0.6 s apart, both followed at once (turtlesim obeys a command for 1 s).
+    One controller's steady commands are no fight, nor two turtles driven
+    each by its own node, nor one script's lines, nor a node that takes
+    over more than the timeout after the last one's command, nor a fight
+    before `since`."""
+    scripts = [sent(1.0, 'turtle1', '/rostopic_11'), sent(4.0, 'turtle1', '/rostopic_12'),
+               sent(4.6, 'turtle1', '/rostopic_21'), sent(7.0, 'turtle1', '/rostopic_13')]
+    assert fight(scripts, 0.0) == (4.6, 'turtle1')
+    assert fight(scripts, 4.3) is None
+    steady = [sent(0.1 * i, 'turtle1', '/controller') for i in range(100)]
+    assert fight(steady, 0.0) is None
+    two_turtles = sorted(steady + [sent(0.1 * i + 0.05, 'turtle2', '/other') for i in range(100)],
+                         key=lambda e: e['t'])
+    assert fight(two_turtles, 0.0) is None
+    assert fight([sent(1.0, 'turtle1', '/a'), sent(2.2, 'turtle1', '/b')], 0.0) is None
+    assert fight([sent(1.0, 'turtle1', '/a', '/b')], 0.0) == (1.0, 'turtle1')
+    assert fight([dict(k='cmd', t=1.0, turtle='turtle1', n=2)], 0.0) is None    # told no senders
 
 
 def test_the_drawing_ends_when_the_turtles_stood_still_long_enough_and_not_before():

@@ -42,6 +42,7 @@ def run_of(name, executables=(), drivers=()):
     by = [dict(k='by', t=1.0, node=node) for node in drivers]
     return SimpleNamespace(name=name, build=OK, launch=Step(False, f'{name} launched'),
                            waited=OK, talker=OK, stuck='', waiting='', limit='', broken='',
+                           fought='',
                            events=[graph],
                            record=[dict(k='spawn', t=0.0, turtle='turtle1', x=5.5, y=5.5)] + by,
                            executables=list(executables), cpu_pct=None, limit_s=None,

@@ -290,7 +290,7 @@ class TurtlesimNode:
                 return
             try:
                 turtle.command(msg.linear.x, msg.linear.y, msg.angular.z, time.monotonic())
-                self.record.command(name)
+                self.record.command(name, caller(msg))
                 self.record.acted(caller(msg))
             except RequestError as e:
                 rospy.logwarn_throttle(1.0, '%s/cmd_vel: %s; the command is ignored', name, e)

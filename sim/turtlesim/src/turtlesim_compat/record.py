@@ -9,7 +9,8 @@ Lines ('k' is the kind, 't' time.monotonic() when it happened):
     pen    turtle r g b width off  clear, reset (reset: every turtle gone, turtle1 anew)
     jump   turtle to=[x, y, theta] ink=[segments] n   n teleports in a tick
     move   turtle to=[x, y, theta] ink=[segments]   a tick's move, driven by cmd_vel
-    cmd    turtle n                commands that came on cmd_vel since the last such line
+    cmd    turtle n by             commands that came on cmd_vel since the last such line,
+                                   and the nodes that sent them (sorted)
     by     node                    a node's first command or call that changed the world
     refused call why               a request refused (a spawn past ~max_turtles, a bad name)
     end    why                     the simulator shuts down
@@ -79,6 +80,7 @@ class Record:
     def __init__(self, environ=os.environ):
         self.account, self.feed = Account(environ), InkFeed()
         self.commands = {}      # turtle: commands since the last count (the account's)
+        self.commanders = {}    # turtle: the nodes that sent them
         self.actors = set()     # the nodes told of in `by` lines
         self.ticks = 0
 
@@ -109,9 +111,10 @@ class Record:
             self.actors.add(node)
             self('by', node=node)
 
-    def command(self, turtle):
+    def command(self, turtle, node):
         if self.account.out is not None:
             self.commands[turtle] = self.commands.get(turtle, 0) + 1
+            self.commanders.setdefault(turtle, set()).add(node)
 
     def turtle_ticked(self, turtle, before, after_jump, jumped, moved, teleports=0):
         """A turtle's tick: its `teleports` (their ink `jumped`) and its
@@ -130,5 +133,5 @@ class Record:
         self.ticks += 1
         if self.ticks % COMMANDS_EVERY == 0 and self.commands:
             for turtle, count in sorted(self.commands.items()):
-                self('cmd', turtle=turtle, n=count)
-            self.commands = {}
+                self('cmd', turtle=turtle, n=count, by=sorted(self.commanders[turtle]))
+            self.commands, self.commanders = {}, {}

@@ -43,3 +43,23 @@ def test_each_node_that_acted_is_told_once():
     record.account.out.close()
     assert [line['node'] for line in lines_of(read_end) if line['k'] == 'by'] == \
         ['/controller', '/rosservice_1']
+
+
+def test_each_count_of_commands_names_the_nodes_that_sent_them():
+    """The grader tells executables that fight over one turtle by who sent
+    its commands: each count (about 0.1 s of ticks) names its senders."""
+    read_end, write_end = os.pipe()
+    record = Record({FD_VARIABLE: str(write_end)})
+    for node in ('/b', '/a', '/b'):
+        record.command('turtle1', node)
+    record.command('turtle2', '/a')
+    for _ in range(6):          # COMMANDS_EVERY ticks
+        record.tick_ended()
+    record.command('turtle1', '/a')
+    for _ in range(6):
+        record.tick_ended()
+    record.account.out.close()
+    counts = [(line['turtle'], line['n'], line['by'])
+              for line in lines_of(read_end) if line['k'] == 'cmd']
+    assert counts == [('turtle1', 3, ['/a', '/b']), ('turtle2', 1, ['/a']),
+                      ('turtle1', 1, ['/a'])]
