@@ -21,7 +21,12 @@ SAID_CHARS = 200        # characters of a line a node printed, shown at most
 OTHER_WORLD = ((re.compile(r"env: .python2.: No such file"),
                 'ROS Noetic runs Python 3: name python3 in its #! line'),
                (re.compile(r"No module named .rcl(py|cpp)."),
-                'that is ROS 2, and this lab is ROS 1 (Noetic): write it with rospy'))
+                'that is ROS 2, and this lab is ROS 1 (Noetic): write it with rospy'),
+               (re.compile(r"^SyntaxError: Missing parentheses in call to .print."),
+                "that is Python 2's print, and ROS Noetic runs Python 3: call print(...)"),
+               (re.compile(r"^TabError: "),
+                'Python 2 took tabs and spaces mixed, and ROS Noetic runs Python 3: indent '
+                'with spaces only'))
 ARGUMENT_ERRORS = ('IndexError', 'ValueError')    # of a line that reads sys.argv: no arguments
 # how the lines roslaunch prints of its own begin
 ROSLAUNCH_LINES = ('process[', '[', 'setting /', 'ROS_MASTER_URI', '...', 'started roslaunch',
@@ -142,19 +147,37 @@ def _tail(path):
 
 def first_death(output, work):
     """'NODE died: its last error line (where in the package)', for the
-    first node roslaunch saw die (the line from its log, else from the
-    terminal before it died); with no error line, the line printed just
-    before it died (last_said); or ''."""
-    died = re.search(r'^\[(\S+?)(-\d+)?\] process has died', output, re.MULTILINE)
+    first node roslaunch saw die (the line from its log, else from its
+    traceback in the terminal, traceback_of, else from the terminal before
+    it died); with no error line, the line printed just before it died
+    (last_said); or ''."""
+    died = re.search(r'^\[(\S+?)(-\d+)?\] process has died(.*)$', output, re.MULTILINE)
     if not died:
         return ''
-    node = died.group(1)
-    for text in (node_logs(work, node), output[:died.start()]):
+    node, before = died.group(1), output[:died.start()]
+    program = re.search(r'\bcmd (\S+)', died.group(3))
+    own = traceback_of(before, program.group(1)) if program else ''
+    for text in (node_logs(work, node), own, before):
         why = last_error(text)
         if why:
             return f'{node} died: {why}{in_package(text, work)}{_other_world(why)}'
     said = theirs(last_said(output[:died.start()]), work)   # a usage line names its script
     return f'{node} died' + (f' just after this line was printed: {said}' if said else '')
+
+
+def traceback_of(output, program):
+    """The traceback in roslaunch's terminal `output` that names the file
+    `program`, to its error line, or '': nodes that die together print
+    theirs one after another, and the last error line before a death may
+    be another node's (a real class's three Python 2 scripts)."""
+    lines, start = output.splitlines(), None
+    for i, line in enumerate(lines):
+        frame = FRAME_LINE.match(line)
+        if start is None and frame and frame.group(1) == program:
+            start = i
+        elif start is not None and ERROR_LINE.match(line):
+            return '\n'.join(lines[start:i + 1])
+    return ''
 
 
 def _other_world(why):

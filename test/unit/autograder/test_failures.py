@@ -140,7 +140,8 @@ def test_a_death_says_where_in_the_package_its_error_was_raised(tmp_path):
                '[sagar_initial-2] process has died [pid 23, exit code 1].\n')
     assert talker_failure(python2, work) == (
         "sagar_initial died: SyntaxError: Missing parentheses in call to 'print'. Did you mean "
-        "print(...)? (VS/src/initials.py, line 20)")
+        "print(...)? (VS/src/initials.py, line 20); that is Python 2's print, and ROS Noetic "
+        "runs Python 3: call print(...)")
 
 
 def test_a_script_that_wants_its_arguments_says_so(tmp_path):
@@ -220,3 +221,30 @@ def test_a_script_stopped_at_a_rostopic_pub_that_waits_says_where_and_what_to_ty
                'be stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits')
     assert why_still('', str(tmp_path), [], {'/writer': ['/turtle_write']}, [], waiting) == \
         waiting
+
+
+def test_nodes_that_die_together_each_get_their_own_traceback(tmp_path):
+    """A real class's three Python 2 scripts, started together: each
+    traceback is printed before roslaunch says any died, so the last error
+    line before the first death was the third script's. The first to die
+    is named with its own error, and what Python 3 wants instead."""
+    work = str(tmp_path)
+    src = f'{work}/ws/src/m_lab/src'
+    output = (f'  File "{src}/turn.py", line 30\n    print "turning"\n    ^^^^^\n'
+              "SyntaxError: Missing parentheses in call to 'print'. Did you mean print(...)?\n"
+              f'  File "{src}/draw_m.py", line 12\n    turn(40, 90)\n'
+              'TabError: inconsistent use of tabs and spaces in indentation\n'
+              f'[turn0-1] process has died [pid 21, exit code 1, cmd {src}/turn.py '
+              f'__name:=turn0 __log:={work}/home/.ros/log/1/turn0-1.log].\n'
+              f'[draw_m1-2] process has died [pid 22, exit code 1, cmd {src}/draw_m.py '
+              f'__name:=draw_m1].\n')
+    assert talker_failure(output, work) == (
+        "turn0 died: SyntaxError: Missing parentheses in call to 'print'. Did you mean "
+        "print(...)? (m_lab/src/turn.py, line 30); that is Python 2's print, and ROS Noetic "
+        "runs Python 3: call print(...)")
+    turn, draw = (line + '\n' for line in output.splitlines()[-2:])
+    draw_first = output.replace(turn + draw, draw + turn)
+    assert talker_failure(draw_first, work) == (
+        'draw_m1 died: TabError: inconsistent use of tabs and spaces in indentation '
+        '(m_lab/src/draw_m.py, line 12); Python 2 took tabs and spaces mixed, and ROS Noetic '
+        'runs Python 3: indent with spaces only')
