@@ -18,7 +18,8 @@ real class's was: run unbuilt), and one whose script stops at its first
 `rostopic pub -l` (latch, where -1 was meant), as a real class's did,
 and a C++ package whose CMakeLists.txt builds none of its nodes (its
 add_executable lines commented out, as catkin_create_pkg writes them),
-with its launch file and without. Each costs its own row only, says why in words, and the grader's own
+with its launch file and without, and two scripts of `rostopic pub -1`
+lines that take turns on turtle1, never at once. Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
 import json
@@ -100,6 +101,18 @@ ASKS = {'package.xml': BY_HAND['package.xml'].replace('hw3', 'asks'),
                            '        move.linear.x, move.angular.z = x, z\n'
                            '        cmd.publish(move)\n'
                            '        rospy.sleep(1.5)\n'}
+# Two scripts of `rostopic pub -1` lines, both executable, no launch file:
+# legs.sh draws an L; bars.sh, started with it, waits for its first move and
+# turns turtle1 between its lines, each 3 s or more from any of legs.sh's,
+# as a real class's two scripts took turns on turtle1. legs.sh alone draws the L.
+PUB = "rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- '[{}, 0.0, 0.0]' '[0.0, 0.0, {}]'\n"
+TURNS = {'package.xml': BY_HAND['package.xml'].replace('hw3', 'turns'),
+         'CMakeLists.txt': BY_HAND['CMakeLists.txt'].replace('hw3', 'turns'),
+         'scripts/legs.sh': '#!/bin/bash\n' + BY_HAND['scripts/letters.sh'].split('rostopic')[0] +
+                            PUB.format(3.0, 0.0) + 'sleep 3\n' + PUB.format(0.0, 1.5708) +
+                            'sleep 3\n' + PUB.format(2.0, 0.0),
+         'scripts/bars.sh': '#!/bin/bash\nrostopic echo -n 1 /turtle1/cmd_vel > /dev/null\n' +
+                            'sleep 3\n' + PUB.format(0.0, 0.8) + 'sleep 3\n' + PUB.format(0.0, 0.8)}
 PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
 RUBRIC = os.path.join(HERE, 'rubric.yaml')
 NOAHS = ('o6_three', 'o10_turning', 'o19_passed_over')     # Noah's package, changed
@@ -122,6 +135,9 @@ CONCLUSIONS = {
                                      'of lab_one: the grader started its executables (keyboard.py, '
                                      'n_controller.py, spin_forever.py) together (they drove '
                                      'turtle1 at once'),
+    # legs.sh and bars.sh take turns on turtle1, never at once: stopped, as a TA stops them
+    'o20_turns': ('L', 'pass', 'no launch file: the grader started its executables (bars.sh, '
+                               'legs.sh) together (they took turns driving turtle1'),
     'o7_siblings': ('L', 'pass', 'every criterion met'),
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
     'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none of '
@@ -224,15 +240,17 @@ def graded(tmp_path_factory):
     shutil.rmtree(os.path.join(cls, 'o18_no_launch', 'hana_lab', 'launch'))
     no_cmake = {name: text for name, text in BY_HAND.items() if name != 'CMakeLists.txt'}
     for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS),
-                          ('o15_no_cmake/hw3', no_cmake), ('o16_latched/hw3', LATCHED)):
+                          ('o15_no_cmake/hw3', no_cmake), ('o16_latched/hw3', LATCHED),
+                          ('o20_turns/turns', TURNS)):
         for name, text in files.items():
             path = os.path.join(cls, folder, name)
             os.makedirs(os.path.dirname(path), exist_ok=True)
             with open(path, 'w') as f:
                 f.write(text)
-            os.chmod(path, 0o755 if name == 'scripts/asks.py' else 0o644)
+            os.chmod(path, 0o755 if name in ('scripts/asks.py', 'scripts/legs.sh',
+                                             'scripts/bars.sh') else 0o644)
     lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13',
-             'o14', 'o15', 'o16')  # not o2
+             'o14', 'o15', 'o16', 'o20')  # not o2
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +

@@ -339,24 +339,33 @@ def actors(record):
     return {e['node'] for e in record if e['k'] == 'by'}
 
 
-def fight(record, since):
-    """(t, turtle) where, after `since`, a turtle first took commands from
-    two nodes within COMMAND_TIMEOUT of each other, both still driving it
-    as turtlesim obeys a command (the senders its `cmd` lines name); else
-    None. A package's executables started together that fight so draw no
-    letter: a TA stops them and runs each alone (a real class's two
-    scripts of `rostopic pub -1` lines ran 40 to 115 s together)."""
+def fight(record, since, owner=lambda node: node):
+    """(t, turtle, how) where, after `since`, a turtle first took commands
+    from two of the executables that sent them (`owner` of each node the
+    `cmd` lines name): 'at once', within COMMAND_TIMEOUT of each other,
+    both still driving it as turtlesim obeys a command; or 'by turns',
+    from one, another, then the first again, as a handoff never does;
+    else None. A package's executables started together that fight so draw
+    no letter: a TA stops them and runs each alone (a real class's two
+    scripts of `rostopic pub -1` lines ran 40 to 115 s together; lines of
+    two scripts that stay more than the timeout apart take turns)."""
     start = len(record)
     while start and record[start - 1]['t'] >= since:   # the record is in time order
         start -= 1
-    latest = {}     # turtle: {node: t of its latest command}
+    latest, turns = {}, {}     # turtle: {owner: t of its latest command}; [owners in turn]
     for e in record[start:]:
         if e['k'] != 'cmd':
             continue
+        owners = sorted({owner(node) for node in e.get('by', ())})
         senders = latest.setdefault(e['turtle'], {})
-        senders.update((node, e['t']) for node in e.get('by', ()))
+        senders.update((who, e['t']) for who in owners)
         if sum(e['t'] - t <= COMMAND_TIMEOUT for t in senders.values()) > 1:
-            return e['t'], e['turtle']
+            return e['t'], e['turtle'], 'at once'
+        taken = turns.setdefault(e['turtle'], [])     # one owner here: two are 'at once'
+        if owners and taken[-1:] != owners:
+            if owners[0] in taken:
+                return e['t'], e['turtle'], 'by turns'
+            taken.append(owners[0])
     return None
 
 

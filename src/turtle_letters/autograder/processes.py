@@ -4,6 +4,7 @@ drew."""
 import json
 import os
 import platform
+import re
 import select
 import threading
 import time
@@ -12,6 +13,7 @@ from ..grading.procstat import cpu_seconds, stat_fields
 from . import observations as seen
 
 SHELLS = ('bash', 'sh', 'dash')
+ANONYMOUS = re.compile(r'_(\d+)_\d+$')     # an anonymous node's name: NAME_PID_MS
 READ = {'x86_64': '0', 'aarch64': '63'}.get(platform.machine())    # read(2)'s number here
 
 
@@ -93,23 +95,73 @@ def _descends(pid, root):
 class RunningScripts:
     """The submission's shell scripts (in `folder`) that a run's roslaunch
     started as nodes, found once (the lab is up): whether one still runs,
-    and when one was last seen to."""
+    when one was last seen to, and which started an anonymous node (owner)."""
 
     def __init__(self, root, folder):
         self.pids = script_nodes(root, folder)
         self.until = None       # monotonic t one was last seen running; None: none was
+        self.started = {}       # a pid inside the sandbox: the script whose process tree has it
 
     def running(self):
-        """Whether one still runs (a zombie, ended and not yet reaped, does not)."""
+        """Whether one still runs (a zombie, ended and not yet reaped, does
+        not); the processes each running one started are noted (started)."""
+        alive = False
         for pid in self.pids:
             try:
                 state = stat_fields(pid)[0]
             except OSError:
                 continue
             if state != 'Z':
-                self.until = time.monotonic()
-                return True
-        return False
+                alive = True
+                name = _script_name(pid)
+                self.started.update((inside, name) for inside in map(_pid_inside,
+                                                                       _descendants(pid)) if inside)
+        if alive:
+            self.until = time.monotonic()
+        return alive
+
+    def owner(self, node):
+        """The script that started `node`, an anonymous node whose name
+        carries its pid in the sandbox (rostopic's and rosservice's:
+        /rostopic_PID_MS), as seen while it ran; else `node` itself."""
+        found = ANONYMOUS.search(node)
+        return self.started.get(int(found.group(1)), node) if found else node
+
+
+def _script_name(pid):
+    """The file name of the script shell `pid` runs ('' if it is gone)."""
+    try:
+        with open(f'/proc/{pid}/cmdline', 'rb') as f:
+            return os.path.basename(os.fsdecode(f.read().split(b'\0')[1]))
+    except (OSError, IndexError):
+        return ''
+
+
+def _descendants(pid):
+    """The pids of the processes under `pid` (its children's, and theirs)."""
+    found, todo = [], [pid]
+    while todo:
+        parent = todo.pop()
+        for task in _tasks(parent):
+            try:
+                with open(f'/proc/{parent}/task/{task}/children') as f:
+                    children = [int(child) for child in f.read().split()]
+            except OSError:
+                continue
+            found += children
+            todo += children
+    return found
+
+
+def _pid_inside(pid):
+    """Process `pid`'s pid in the innermost pid namespace it is in (the
+    sandbox's: what its node's anonymous name carries), or None."""
+    try:
+        with open(f'/proc/{pid}/status') as f:
+            line = next((line for line in f if line.startswith('NSpid:')), '')
+    except OSError:
+        return None
+    return int(line.split()[-1]) if line.split()[1:] else None
 
 
 class ControllerCpu:

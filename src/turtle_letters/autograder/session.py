@@ -35,6 +35,7 @@ REFUSAL = 'cannot launch node'  # what roslaunch says of a node of its launch fi
 MISSING_INCLUDE = re.compile(r"catkin_package\(\) include dir '([^']+)' does not exist "
                              r"relative to '([^']+)'")
 MKDIR_S = 10       # s a mkdir in the sandbox may take
+FIGHT_SEEN = 15    # s of the record looked at for a fight: turns A B A, a `rostopic pub -1` 3 s
 NO_TURTLESIM = 'its launch file does not start turtlesim'   # nor does the grader's, by design
 ROS_VARIABLES = ('ROS_PACKAGE_PATH', 'CMAKE_PREFIX_PATH', 'PYTHONPATH', 'LD_LIBRARY_PATH',
                  'PKG_CONFIG_PATH', 'ROS_DISTRO', 'ROS_VERSION', 'ROS_PYTHON_VERSION',
@@ -515,10 +516,11 @@ def _watch(lab, limits, result):
     up = time.monotonic()
     result.launch = _launched(events, os.path.join(terminal.box.work, 'stand_in'), up - started,
                               seen.moved(record, started))
+    scripts = RunningScripts(terminal.process.pid, os.path.join(terminal.box.work, 'ws'))
+    alive = _noting(scripts, alive)
     wait_until(lambda: False, limits.stand, alive)
     result.waited = _waited(record, started, limits.stand)
     cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
-    scripts = RunningScripts(terminal.process.pid, os.path.join(terminal.box.work, 'ws'))
     shown = terminal.output.size
     terminal.type(b'P')
     time.sleep(0.2)
@@ -544,7 +546,7 @@ def _watch(lab, limits, result):
     since = result.since = asked or seen.looked_for_from(record, started, result.trigger)
     result.limit_s = limits.drawing
     if wait_until(lambda: seen.moved(record, since), limits.start, alive):
-        wait_until(lambda: _fought(result, record, since) or
+        wait_until(lambda: _fought(result, record, since, scripts) or
                    _stood(record, since, limits.settle, scripts), limits.drawing, alive)
         if not result.fought and terminal.process.poll() is not None:
             # roslaunch ended with its last node (a script of `rostopic pub -1`s): the
@@ -554,6 +556,15 @@ def _watch(lab, limits, result):
     else:
         result.still_from = shown
     result.cpu_pct, result.script_until = cpu.share(), scripts.until
+
+
+def _noting(scripts, alive):
+    """`alive`, noting at each look what the scripts run so far have started
+    (RunningScripts.owner: a fight told by script sees their first lines)."""
+    def noted():
+        scripts.running()
+        return alive()
+    return noted
 
 
 def _up(lab, started, refused, limits):
@@ -652,15 +663,17 @@ def _started_scripts(result, work):
                                               {result.package.name: copied})]
 
 
-def _fought(result, record, since):
+def _fought(result, record, since, scripts):
     """Whether the executables the grader started together drove one turtle
-    at once (seen.fight), as a TA watching stops them; result.fought says so.
-    Only the last few seconds are looked at: the record grows as it is watched."""
-    recent = max(since, time.monotonic() - 3 * seen.COMMAND_TIMEOUT)
-    found = len(result.executables) > 1 and seen.fight(record, recent)
+    at once or by turns (seen.fight; each node a script started is the
+    script's), as a TA watching stops them; result.fought says so. Only the
+    last FIGHT_SEEN s are looked at: the record grows as it is watched."""
+    recent = max(since, time.monotonic() - FIGHT_SEEN)
+    found = len(result.executables) > 1 and seen.fight(record, recent, scripts.owner)
     if found:
-        t, turtle = found
-        result.fought = f'they drove {turtle} at once {t - since:.0f} s into the drawing'
+        t, turtle, how = found
+        did = f'drove {turtle} at once' if how == 'at once' else f'took turns driving {turtle}'
+        result.fought = f'they {did} {t - since:.0f} s into the drawing'
     return bool(found)
 
 

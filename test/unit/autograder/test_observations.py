@@ -191,7 +191,7 @@ def test_two_nodes_driving_one_turtle_within_turtlesims_command_timeout_fight():
     before `since`."""
     scripts = [sent(1.0, 'turtle1', '/rostopic_11'), sent(4.0, 'turtle1', '/rostopic_12'),
                sent(4.6, 'turtle1', '/rostopic_21'), sent(7.0, 'turtle1', '/rostopic_13')]
-    assert fight(scripts, 0.0) == (4.6, 'turtle1')
+    assert fight(scripts, 0.0) == (4.6, 'turtle1', 'at once')
     assert fight(scripts, 4.3) is None
     steady = [sent(0.1 * i, 'turtle1', '/controller') for i in range(100)]
     assert fight(steady, 0.0) is None
@@ -199,8 +199,35 @@ def test_two_nodes_driving_one_turtle_within_turtlesims_command_timeout_fight():
                          key=lambda e: e['t'])
     assert fight(two_turtles, 0.0) is None
     assert fight([sent(1.0, 'turtle1', '/a'), sent(2.2, 'turtle1', '/b')], 0.0) is None
-    assert fight([sent(1.0, 'turtle1', '/a', '/b')], 0.0) == (1.0, 'turtle1')
+    assert fight([sent(1.0, 'turtle1', '/a', '/b')], 0.0) == (1.0, 'turtle1', 'at once')
     assert fight([dict(k='cmd', t=1.0, turtle='turtle1', n=2)], 0.0) is None    # told no senders
+
+
+def test_two_scripts_whose_lines_take_turns_on_one_turtle_fight():
+    """Two scripts of `rostopic pub -1` lines started together, their lines
+    2 s apart, never within turtlesim's command timeout: by the script that
+    started each line's node (owner), turtle1 went from one script to the
+    other and back. Told no owner, each line is a node of its own and no
+    turn is seen; one script's lines 0.5 s apart are no fight, nor a
+    handoff from one script to the other, nor a turn on another turtle."""
+    scripts = {'/rostopic_11_5': 'a.sh', '/rostopic_21_6': 'b.sh', '/rostopic_12_7': 'a.sh',
+               '/rostopic_22_8': 'b.sh', '/rostopic_13_9': 'a.sh'}
+
+    def owner(node):
+        return scripts.get(node, node)
+    lines = [sent(1.0 + 2 * k, 'turtle1', node) for k, node in enumerate(scripts)]
+    assert fight(lines, 0.0, owner) == (5.0, 'turtle1', 'by turns')
+    assert fight(lines, 0.0) is None
+    assert fight(lines, 2.0, owner) == (7.0, 'turtle1', 'by turns')
+    close = [sent(1.0 + 0.5 * k, 'turtle1', node) for k, node in
+             enumerate(['/rostopic_11_5', '/rostopic_12_7', '/rostopic_13_9'])]
+    assert fight(close, 0.0, owner) is None
+    handoff = [sent(1.0 + 2 * k, 'turtle1', node) for k, node in
+               enumerate(['/rostopic_11_5', '/rostopic_12_7', '/rostopic_21_6', '/rostopic_22_8'])]
+    assert fight(handoff, 0.0, owner) is None
+    apart = [sent(e['t'], 'turtle2' if owner(e['by'][0]) == 'b.sh' else 'turtle1', *e['by'])
+             for e in lines]
+    assert fight(apart, 0.0, owner) is None
 
 
 def test_the_drawing_ends_when_the_turtles_stood_still_long_enough_and_not_before():

@@ -102,6 +102,31 @@ def test_a_shell_script_of_the_submission_is_seen_running_until_it_ends(tmp_path
         launch.wait()
 
 
+def test_a_node_a_script_started_is_the_scripts(tmp_path):
+    """Two scripts started as roslaunch starts nodes, each starting a
+    process under it, as a `rostopic pub -1` line does: an anonymous node
+    named with that process's pid is the script's; another node is its own."""
+    (tmp_path / 'ws').mkdir()
+    for name in ('a.sh', 'b.sh'):        # a child that lives, its pid where the test reads it
+        (tmp_path / 'ws' / name).write_text('sleep 60 & echo $! > "$0.pid"\nwait\n')
+    launch = subprocess.Popen(
+        ['bash', '-c', 'bash "$0"/ws/a.sh __name:=a & bash "$0"/ws/b.sh __name:=b & wait',
+         str(tmp_path)], start_new_session=True)
+    try:
+        pids = [tmp_path / 'ws' / f'{name}.pid' for name in ('a.sh', 'b.sh')]
+        assert wait_until(lambda: all(p.exists() and p.read_text().strip() for p in pids), 10.0)
+        scripts = RunningScripts(launch.pid, str(tmp_path / 'ws'))
+        assert len(scripts.pids) == 2 and scripts.running()
+        a, b = (int(p.read_text()) for p in pids)
+        assert scripts.owner(f'/rostopic_{a}_1796576956448') == 'a.sh'
+        assert scripts.owner(f'/rostopic_{b}_1796576956449') == 'b.sh'
+        assert scripts.owner('/n_controller') == '/n_controller'
+        assert scripts.owner(f'/rostopic_{launch.pid}_1') == f'/rostopic_{launch.pid}_1'
+    finally:
+        os.killpg(launch.pid, 9)
+        launch.wait()
+
+
 def test_a_node_waiting_for_a_line_on_its_terminal_is_seen_until_it_has_one():
     """Started as roslaunch starts nodes (`__name:=`), on a terminal: a node
     at a prompt (input()) is seen to read its standard input; one that
