@@ -27,6 +27,7 @@ OTHER_WORLD = ((re.compile(r"env: .python2.: No such file"),
                (re.compile(r"^TabError: "),
                 'Python 2 took tabs and spaces mixed, and ROS Noetic runs Python 3: indent '
                 'with spaces only'))
+NO_TALKER = 'no node of the run published on /chatter (a talker publishes "P" there when P is typed)'
 ARGUMENT_ERRORS = ('IndexError', 'ValueError')    # of a line that reads sys.argv: no arguments
 # how the lines roslaunch prints of its own begin
 ROSLAUNCH_LINES = ('process[', '[', 'setting /', 'ROS_MASTER_URI', '...', 'started roslaunch',
@@ -232,10 +233,13 @@ def _own_frame(text, work):
     return path[len(inside):], number, code
 
 
-def talker_failure(output, work):
+def talker_failure(output, work, talked=True):
     """Why the talker said nothing: the first node to die and its error
-    line, else the last error line anywhere."""
-    return first_death(output, work) or last_error(output, node_logs(work))
+    line; else, where no node `talked` (published on /chatter), that none
+    did (a real class's scripts had the last error line anywhere, a
+    rosservice call's, named as the talker's); else that error line."""
+    return first_death(output, work) or \
+        (last_error(output, node_logs(work)) if talked else NO_TALKER)
 
 
 def why_still(output, work, listeners, offered=None, events=(), waiting=''):

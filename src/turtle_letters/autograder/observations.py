@@ -324,6 +324,11 @@ def _offered(services, ours):
     return {node: sorted(found) for node, found in offered.items()}
 
 
+def talkers(events):
+    """Every node not the grader's that the graph saw publish on /chatter."""
+    return _ever_in_graph(events, 'chatter_publishers')
+
+
 def last_graph(events):
     return next((e for e in reversed(events) if e['kind'] == 'graph'), None)
 

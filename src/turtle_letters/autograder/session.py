@@ -74,6 +74,7 @@ class Run:
         self.script_until = None    # t a shell script it started was last seen running
         self.waiting = ''       # where a script it started stops at a rostopic pub, in words
         self.fought = ''        # how the executables started together fought, if they did
+        self.typed = ''         # the letters the grader typed at a prompt, if it did
 
     def watched_for(self):
         """s the drawing was watched for, from the trigger (or the launch) on."""
@@ -590,7 +591,7 @@ def _typed_letters(lab, limits, result, typed, shown):
         return None
     prompt = ([line.strip() for line in terminal.text(shown).splitlines() if line.strip()]
               or [''])[-1][:80]
-    asked = time.monotonic()
+    asked, result.typed = time.monotonic(), result.letters
     terminal.type(result.letters.encode() + b'\r')
     moved = wait_until(lambda: seen.moved(record, asked), limits.start, lab.going)
     result.talker = result.talker._replace(says=(
@@ -642,7 +643,10 @@ def _explain(result, terminal, work):
     if result.launch is not None and result.launch.says == 'the lab did not come up':
         result.launch = result.launch._replace(says=why_not_launched(text, result.events, work))
     if result.talker is not None and not result.talker.ok:
-        why = talker_failure(text, work)
+        # no talker is the reason only where the graph was seen, and no prompt typed instead
+        talked = result.typed or seen.last_graph(result.events) is None or \
+            seen.talkers(result.events)
+        why = talker_failure(text, work, talked)
         if why:
             result.talker = result.talker._replace(says=f'{result.talker.says}: {why}')
     result.waiting = waiting_publishers(*_started_scripts(result, work))

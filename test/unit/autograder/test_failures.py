@@ -32,6 +32,19 @@ def test_its_own_log_file_first(tmp_path):
     assert talker_failure(DIED, str(tmp_path)) == 'talker died: EOFError: EOF when reading a line'
 
 
+def test_where_no_node_published_on_chatter_that_is_why_not_another_error(tmp_path):
+    """A real class's package had no talker, and the row named a rosservice
+    call's error, the last error line anywhere, as the talker's. Where the
+    graph saw no node publish on /chatter, that is why; a death still is."""
+    called = "ERROR: service [/kill] responded with an error: b'no turtle named [turtle2]'\n"
+    assert talker_failure(called, str(tmp_path)) == called.strip()
+    assert talker_failure(called, str(tmp_path), talked=False) == (
+        'no node of the run published on /chatter (a talker publishes "P" there when P is '
+        'typed)')
+    assert talker_failure(DIED, str(tmp_path), talked=False) == \
+        "talker died: NameError: name 'raw_input' is not defined"
+
+
 def test_no_death_the_last_error_anywhere_or_nothing(tmp_path):
     assert talker_failure('ValueError: bad\nall fine\n', str(tmp_path)) == 'ValueError: bad'
     assert talker_failure('all fine\n', str(tmp_path)) == ''
