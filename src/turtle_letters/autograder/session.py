@@ -643,10 +643,7 @@ def _explain(result, terminal, work):
     if result.launch is not None and result.launch.says == 'the lab did not come up':
         result.launch = result.launch._replace(says=why_not_launched(text, result.events, work))
     if result.talker is not None and not result.talker.ok:
-        # no talker is the reason only where the graph was seen, and no prompt typed instead
-        talked = result.typed or seen.last_graph(result.events) is None or \
-            seen.talkers(result.events)
-        why = talker_failure(text, work, talked)
+        why = talker_failure(text, work, talked=not _no_talker(result))
         if why:
             result.talker = result.talker._replace(says=f'{result.talker.says}: {why}')
     result.waiting = waiting_publishers(*_started_scripts(result, work))
@@ -656,6 +653,15 @@ def _explain(result, terminal, work):
                                  graph['chatter_subscribers'] if graph else [],
                                  graph.get('offered') if graph else None, result.events,
                                  result.waiting)
+
+
+def _no_talker(result):
+    """Whether the graph, watched past the trigger, saw no node of the run
+    publish on /chatter, and no prompt was typed letters instead: why no P
+    came (not where the grader's watcher was shut down before it)."""
+    watched = result.trigger is not None and any(
+        e['kind'] == 'graph' and e['t'] >= result.trigger for e in result.events)
+    return watched and not result.typed and not seen.talkers(result.events)
 
 
 def _started_scripts(result, work):
