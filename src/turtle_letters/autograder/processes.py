@@ -99,6 +99,7 @@ class RunningScripts:
 
     def __init__(self, root, folder):
         self.pids = script_nodes(root, folder)
+        self.names = {pid: _script_name(pid) for pid in self.pids}     # each script's file name
         self.until = None       # monotonic t one was last seen running; None: none was
         self.started = {}       # a pid inside the sandbox: the script whose process tree has it
 
@@ -113,9 +114,8 @@ class RunningScripts:
                 continue
             if state != 'Z':
                 alive = True
-                name = _script_name(pid)
-                self.started.update((inside, name) for inside in map(_pid_inside,
-                                                                       _descendants(pid)) if inside)
+                self.started.update((inside, self.names[pid]) for inside in
+                                    map(_pid_inside, _descendants(pid)) if inside)
         if alive:
             self.until = time.monotonic()
         return alive
