@@ -62,6 +62,25 @@ def test_the_core_given_holds_and_two_at_once_are_different_users():
     assert leftovers(before) == ([], [])
 
 
+def test_nothing_a_command_started_outlives_it_while_the_sandbox_stands():
+    """A command that leaves a process running behind it (`&`, as a
+    cadet's script may) takes it along when it ends, the sandbox still
+    open: the grader ends a drawing soon after roslaunch ends on this
+    (observations.GONE_STILL)."""
+    import time
+    from turtle_letters.isolation.sandbox import Sandbox
+    before = sandbox_processes()
+    with Sandbox(package_caps()) as box:
+        ran = subprocess.run(box.inside(['bash', '-c', '(sleep 60 &); echo left'],
+                                        {'PATH': '/usr/bin:/bin'}),
+                             stdout=subprocess.PIPE, universal_newlines=True, timeout=30)
+        deadline = time.monotonic() + 5
+        while leftovers(before)[0] and time.monotonic() < deadline:
+            time.sleep(0.05)
+        left = leftovers(before)[0]
+    assert ran.stdout.strip() == 'left' and left == []
+
+
 def test_a_trial_of_the_sandbox_that_never_ends_says_so_and_leaves_nothing(monkeypatch):
     """The grader's trial of the sandbox (sandbox.problem) runs `true` in a
     real one; here it runs `sleep 60` instead, which never ends in time:

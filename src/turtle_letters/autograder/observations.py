@@ -30,6 +30,10 @@ SCRIPT_PAUSE = 4
 BACKGROUND = DEFAULT_BACKGROUND     # the grader's simulator's, until a clear or reset says
 FULLEST = 3         # canvases a drawing that never ended wiped, read at most (the fullest)
 COMMAND_TIMEOUT = 1.0   # s turtlesim follows a command for, unless another comes (the contract)
+# s every turtle stands, once every process of the submission has ended, that end its
+# drawing: no command can come after, and the last one's COMMAND_TIMEOUT has played out
+# (its moves are recorded each 16 ms frame: a pause this long is no stall of the simulator)
+GONE_STILL = COMMAND_TIMEOUT
 
 
 class Drawing(NamedTuple):
@@ -76,7 +80,7 @@ def of_run(run, settle, canvas=None):
     if run.trigger is None:
         return None
     return drawing(run.record, run.events, run.since, settle, run.finished, run.script_until,
-                   canvas)
+                   canvas, run.gone)
 
 
 def _ever_in_graph(events, role):
@@ -120,12 +124,15 @@ def stood_for(record, since, now):
     return None if last is None or last < since else now - last
 
 
-def pause_ends(start, end, settle, script_until=None):
+def pause_ends(start, end, settle, script_until=None, gone=None):
     """Whether the turtles standing from `start` to `end` ends the drawing:
     `settle` s, counted from when the submission's shell scripts last ran
-    (`script_until`, None: none ran) or SCRIPT_PAUSE times as long."""
+    (`script_until`, None: none ran) or SCRIPT_PAUSE times as long; or
+    GONE_STILL s from `gone`, t every process of the submission had ended
+    (None: not seen so)."""
     ran = -math.inf if script_until is None else script_until
-    return end - max(start, ran) >= settle or end - start >= SCRIPT_PAUSE * settle
+    return end - max(start, ran) >= settle or end - start >= SCRIPT_PAUSE * settle or (
+        gone is not None and end - max(start, gone) >= GONE_STILL)
 
 
 def strokes(lines):
@@ -149,7 +156,7 @@ def strokes(lines):
     return joined, looks
 
 
-def _end(record, first, settle, until, script_until=None):
+def _end(record, first, settle, until, script_until=None, gone=None):
     """t of the last move before a pause that ends the drawing (pause_ends),
     once a turtle has been driven, or None. (Teleports before the first drive are set-up: a
     real class's script teleported with its pen down, cleared, spawned and
@@ -162,22 +169,22 @@ def _end(record, first, settle, until, script_until=None):
         if driven and pause_ends(last, e['t'], settle, script_until):
             return last
         last, driven = e['t'], driven or e['k'] == 'move'
-    return last if pause_ends(last, until, settle, script_until) else None
+    return last if pause_ends(last, until, settle, script_until, gone) else None
 
 
 def drawing(record, events, since, settle, until=math.inf, script_until=None,
-            canvas=None) -> Drawing:
+            canvas=None, gone=None) -> Drawing:
     """The drawing that begins with the first move at or after `since`
     (the record's first line is the simulator's own turtle1), to a pause
     that ends it (pause_ends: `script_until`, t a shell script of the
-    submission was last seen running). Its ink is what a canvas showed:
+    submission was last seen running; `gone`, t all of it had ended). Its ink is what a canvas showed:
     the one left (`canvas` None), else the one begun by the drawing's
     clear or reset numbered `canvas` (-1: the first canvas, before any),
     one of those a drawing that never ended wiped (Drawing.fullest)."""
     first = next(iter(moves(record, since, until)), None)
     if first is None:
         return Drawing([], None, None, 0, impostors(events))
-    ended = _end(record, first, settle, until, script_until)
+    ended = _end(record, first, settle, until, script_until, gone)
     stop = ended if ended is not None else until
     during = [e for e in record if first['t'] <= e['t'] <= stop]
     canvases = _canvases(during)

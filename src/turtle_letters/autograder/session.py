@@ -72,6 +72,7 @@ class Run:
         self.finished = None    # t the run stopped watching
         self.limit_s = None     # s the drawing was watched for at most (limits.drawing)
         self.script_until = None    # t a shell script it started was last seen running
+        self.gone = None        # t roslaunch was seen ended, and every process of its sandbox
         self.waiting = ''       # where a script it started stops at a rostopic pub, in words
         self.fought = ''        # how the executables started together fought, if they did
         self.typed = ''         # the letters the grader typed at a prompt, if it did
@@ -551,9 +552,11 @@ def _watch(lab, limits, result):
                    _stood(record, since, limits.settle, scripts), limits.drawing, alive)
         if not result.fought and terminal.process.poll() is not None:
             # roslaunch ended with its last node (a script of `rostopic pub -1`s): the
-            # turtle's last command plays out, and it is seen to stand
-            wait_until(lambda: _stood(record, since, limits.settle, scripts), limits.settle + 1,
-                       lab.watchable)
+            # turtle's last command plays out, and it is seen to stand; in bubblewrap's
+            # PID namespace, nothing of the submission outlives roslaunch
+            result.gone = time.monotonic() if lab.box.isolated else None
+            wait_until(lambda: _stood(record, since, limits.settle, scripts, result.gone),
+                       limits.settle + 1, lab.watchable)
     else:
         result.still_from = shown
     result.cpu_pct, result.script_until = cpu.share(), scripts.until
@@ -687,10 +690,11 @@ def _fought(result, record, since, scripts):
     return bool(found)
 
 
-def _stood(record, since, settle, scripts):
+def _stood(record, since, settle, scripts, gone=None):
     """Whether the turtles have stood long enough to end the drawing (a
-    shell script of the submission that still runs makes it longer)."""
+    shell script of the submission that still runs makes it longer; all of
+    it gone, at `gone`, shorter)."""
     now = time.monotonic()
     still = seen.stood_for(record, since, now)
     scripts.running()      # notes when one was last seen running
-    return still is not None and seen.pause_ends(now - still, now, settle, scripts.until)
+    return still is not None and seen.pause_ends(now - still, now, settle, scripts.until, gone)

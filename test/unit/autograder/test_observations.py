@@ -2,8 +2,9 @@
 ink counts (the grader's simulator's record), and who triggered it."""
 import pytest
 
-from turtle_letters.autograder.observations import (SCRIPT_PAUSE, chatter_peak, drawing, drew,
-                                                   fight, looked_for_from, moved, one_driver,
+from turtle_letters.autograder.observations import (GONE_STILL, SCRIPT_PAUSE, chatter_peak,
+                                                   drawing, drew, fight, looked_for_from,
+                                                   moved, one_driver,
                                                    own_triggers, stood_for, strokes, roles,
                                                    trigger, unheard, unprompted)
 
@@ -256,6 +257,26 @@ def test_a_pause_while_a_shell_script_runs_ends_the_drawing_only_when_much_longe
     assert drawing(record, [graph()], 0.5, 2.0, script_ended + 2.0, script_ended).ended == last
     longer = first + line(first[-1]['t'] + SCRIPT_PAUSE * 2.0, 6.0, 7.0)
     assert drawing(longer, [graph()], 0.5, 2.0, 60.0, 59.0).ended == first[-1]['t']
+
+
+def test_once_every_process_of_the_submission_ended_a_command_timeout_of_standing_ends_it():
+    """roslaunch ended, and its sandbox's every process with it (`gone`):
+    no command can come, so the turtles standing GONE_STILL s after both the
+    last move and `gone` end the drawing, however long the settle."""
+    record = line(1, 5.0, 6.0)
+    last = record[-1]['t']
+    gone = last - 0.5       # the last command played out after its sender ended
+    ended = dict(settle=5.0, script_until=gone)
+    assert drawing(record, [graph()], 0.5, until=last + GONE_STILL, gone=gone, **ended).ended \
+        == last
+    assert drawing(record, [graph()], 0.5, until=last + GONE_STILL - 0.1, gone=gone,
+                   **ended).ended is None
+    assert drawing(record, [graph()], 0.5, until=last + GONE_STILL, **ended).ended is None
+    late = last + 2.0       # seen ended later: counted from then
+    assert drawing(record, [graph()], 0.5, until=late + GONE_STILL - 0.1, gone=late,
+                   **ended).ended is None
+    assert drawing(record, [graph()], 0.5, until=late + GONE_STILL, gone=late, **ended).ended \
+        == last
 
 
 def test_spawns_kills_and_pens_count_from_the_launch_but_the_simulators_own_turtle1():

@@ -46,7 +46,7 @@ def run_of(name, executables=(), drivers=()):
                            events=[graph],
                            record=[dict(k='spawn', t=0.0, turtle='turtle1', x=5.5, y=5.5)] + by,
                            executables=list(executables), cpu_pct=None, limit_s=None,
-                           script_until=None, watched_for=lambda: 0.0, log=[(f'roslaunch ({name})', f'{name} ran')])
+                           script_until=None, gone=None, watched_for=lambda: 0.0, log=[(f'roslaunch ({name})', f'{name} ran')])
 
 
 def observing(drawn):
