@@ -73,6 +73,20 @@ def _expected(row, where, mode):
         raise RosterError(f'{where}: {e}') from None
 
 
+def _unread_columns(roster_path, header, mode):
+    """A warning where the roster has no letter column but others than id
+    and name: a column of letters under another name (`expected`) would
+    otherwise be passed over without a word, the names' letters taken."""
+    unread = [column for column in header if column not in ('id', 'name', 'letter')]
+    if 'letter' in header or not unread:
+        return []
+    return [f'{roster_path}: no letter column, so each student is expected to draw '
+            f'{"the initials" if mode == "initials" else "the first letter"} of their name; '
+            f'its column{"s" if len(unread) > 1 else ""} {", ".join(unread)} '
+            f'{"are" if len(unread) > 1 else "is"} not read (name a column of letters '
+            f'"letter")']
+
+
 def read(roster_path, submissions, mode='first') -> Tuple[List[Student], List[str]]:
     """The students in roster order, then folders the roster lacks; and warnings."""
     try:
@@ -89,7 +103,7 @@ def read(roster_path, submissions, mode='first') -> Tuple[List[Student], List[st
                          if os.path.isdir(os.path.join(submissions, f)))
     except OSError as e:
         raise RosterError(f'{submissions}: {e}') from None
-    students, seen, warnings = [], set(), []
+    students, seen, warnings = [], set(), _unread_columns(roster_path, header, mode)
     for number, row in enumerate(rows, start=2):
         if None in row or None in row.values():     # DictReader's marks of a short or long row
             given = sum(k is not None and v is not None for k, v in row.items()) + \

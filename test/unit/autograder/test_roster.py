@@ -64,3 +64,19 @@ def test_letters_that_unicode_does_not_decompose_read_as_a_reader_sees_them(tmp_
     assert [s.expected for s in students] == ['OB', 'LN', 'MW', 'MW']
     assert warnings == ["c: in the name 'Mei 李 Wang', '李' has no letter of A-Z: expected 'MW'; "
                         "give the letters in the roster's letter column"]
+
+
+def test_a_column_of_letters_under_another_name_is_warned_of_not_read(tmp_path):
+    """A TA's roster with its letters under `expected`: each student is
+    expected their name's first letter, as without the column, and the
+    warning says so; a roster with a letter column keeps its other columns
+    (an email) without a word."""
+    roster, subs = setup_class(tmp_path, 'id,name,expected\na,Shreya,D\n', [])
+    students, warnings = read(roster, subs)
+    assert [s.expected for s in students] == ['S']
+    assert warnings == [f'{roster}: no letter column, so each student is expected to draw the '
+                        f'first letter of their name; its column expected is not read (name a '
+                        f'column of letters "letter")']
+    roster, subs = setup_class(tmp_path, 'id,name,letter,email\na,Shreya,D,s@x\n', [])
+    students, warnings = read(roster, subs)
+    assert [s.expected for s in students] == ['D'] and warnings == []
