@@ -211,8 +211,7 @@ def run(package: Package, limits: Limits, box: Sandbox, letters='') -> Run:
     if folder_made and result.build.ok:
         result.build = Step(False, f'{folder_made}, and it built', result.build.seconds)
     if package.loose and result.build.ok:
-        result.build = Step(False, f'no package.xml in {package.folder}: nothing a catkin '
-                                   f'workspace builds; the grader wrapped its files in a package '
+        result.build = Step(False, f'{package.loose}; the grader wrapped its files in a package '
                                    f'({LOOSE}) and ran its scripts, as a TA would',
                             result.build.seconds)
     if failed and result.launch is not None:

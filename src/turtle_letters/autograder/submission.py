@@ -36,7 +36,8 @@ class Package(NamedTuple):
     problem: str            # why it cannot be run, or ''
     others: List[str] = []  # the submission's other packages' folders, built beside it
     notes: List[str] = []   # what of the submission was left out, and why
-    loose: bool = False     # no package.xml: scripts the grader wraps in a package (wrap)
+    loose: str = ''         # why its scripts are wrapped in a package (wrap), where they are
+    left: List[str] = []    # folders of `folder` not copied (a course's other projects)
 
 
 def survey(top):
@@ -130,16 +131,19 @@ def _included(path, launch_file, packages):
     return path if inside and os.path.isfile(path) else None
 
 
-def lab_launch(folder, packages=None):
+def lab_launch(folder, packages=None, skipped=()):
     """(rank, file): the launch file whose whole tree starts turtlesim and a
     node of the submission's own packages (`packages`: name: folder; the
     cadet's controller), rank 0; else one with turtlesim, or with an own
     node; else the first; (4, None) for none. (rosbag's or rqt_graph's nodes
     are no controller: a real class's launch that replayed a bag from its
-    author's home was taken over the one that started turtlesim.)"""
+    author's home was taken over the one that started turtlesim.) Those in
+    the folders of `folder` named in `skipped` are none of them."""
     packages = packages or {package_name(folder): folder}
     ranked = [(4, None)]
     for name in launch_files(folder):
+        if name.split(os.sep)[0] in skipped:
+            continue
         started = nodes(os.path.join(folder, name), packages)
         has_sim = any(pkg == 'turtlesim' for pkg, _ in started)
         has_own = any(pkg in packages for pkg, _ in started)
@@ -208,11 +212,15 @@ def find(top) -> Package:
         # a TA runs the scripts of a folder handed in without its package.xml
         # (`bash turtleletterstwo.sh`, as a real class's instructions said)
         launch = lab_launch(top, {LOOSE: top})[1]
-        return Package(LOOSE, top, launch, '', notes=notes, loose=True)
+        return Package(LOOSE, top, launch, '', notes=notes,
+                       loose=f'no package.xml in {top}: nothing a catkin workspace builds')
     ros2 = {f: ros2_build(f) for f, _ in named}
     ours = [(f, n) for f, n in named if n != SIMULATOR and not ros2[f]]
     if not ours:
         return Package('', named[0][0], None, _none_built(named, ros2), notes=notes)
+    beside = _scripts_beside(top, ours)
+    if beside:
+        return beside._replace(notes=notes + beside.notes)
     packages = {n: f for f, n in reversed(ours) if n}     # the shallowest of a name
     folder, name = min(ours, key=lambda fn: (lab_launch(fn[0], packages)[0],
                                              fn[0].count(os.sep), fn[0]))
@@ -241,6 +249,39 @@ def find(top) -> Package:
             kept[other_name] = other
             others.append(other)
     return Package(name, folder, launch, '', others, notes)
+
+
+def _scripts_beside(top, ours):
+    """A course's repository of every project, handed in whole: the lab's
+    script loose in it, and the packages (`ours`: (folder, name)) of other
+    projects (a real one's turtlebot package), none of which names
+    turtlesim. A TA grades the scripts, as handed in without a package.xml;
+    the folders of `top` that name no turtlesim are left out. None where a
+    package names turtlesim, or nothing does."""
+    if any(_names_turtlesim(folder) for folder, _ in ours):
+        return None
+    try:
+        folders = sorted(e.name for e in os.scandir(top) if e.is_dir(follow_symlinks=False)
+                         and e.name not in SKIPPED and not e.name.startswith('.'))
+    except OSError:
+        return None
+    left = [name for name in folders if not _names_turtlesim(os.path.join(top, name))]
+    if not _names_turtlesim(top, skipped=left) or not _runnable(top, skipped=left):
+        return None
+    names = ', '.join(f'{os.path.relpath(folder, top)} ({name})' for folder, name in ours)
+    return Package(LOOSE, top, lab_launch(top, {LOOSE: top}, left)[1], '', left=left,
+                   notes=[f'left out {name}: nothing in it names turtlesim (another project, '
+                          f'not the lab)' for name in left],
+                   loose=f'no package of {top} names turtlesim ({names}), and its scripts '
+                         f'beside them do: the lab is those scripts, with no package.xml')
+
+
+def _names_turtlesim(folder, skipped=()):
+    """Whether a plain file in `folder` (to rosrun's depth; its folders
+    `skipped` aside) names turtlesim or its turtle1, as a lab's code does."""
+    files = _plain_files(folder, 3, lambda found: False, skipped)
+    return any(re.search(rb'turtlesim|turtle1', read_plain(e.path, MAX_BYTES) or b'')
+               for e in files)
 
 
 def _none_built(named, ros2):
@@ -276,10 +317,11 @@ def needed(name, packages, launch_file):
     return wanted
 
 
-def _plain_files(folder, depth, enough):
+def _plain_files(folder, depth, enough, skipped=()):
     """The plain files in a package's folders, as rosrun walks them (links
-    not followed, SKIPPED and hidden folders left out), to `depth` folders
-    deep, in name order within a folder; `enough(found)` stops the walk."""
+    not followed, SKIPPED and hidden folders left out, and those of
+    `folder` named in `skipped`), to `depth` folders deep, in name order
+    within a folder; `enough(found)` stops the walk."""
     found, stack = [], [(folder, 0)]
     while stack and not enough(found):
         here, level = stack.pop()
@@ -289,7 +331,8 @@ def _plain_files(folder, depth, enough):
             continue
         for entry in entries:
             if entry.is_dir(follow_symlinks=False) and entry.name not in SKIPPED \
-                    and not entry.name.startswith('.') and level < depth:
+                    and not entry.name.startswith('.') and level < depth and \
+                    not (level == 0 and entry.name in skipped):
                 stack.append((entry.path, level + 1))
             elif entry.is_file(follow_symlinks=False) and not entry.name.startswith('.'):
                 found.append(entry)
@@ -342,9 +385,10 @@ def made_executable(folder, depth=3):
     return sorted(made)
 
 
-def _runnable(folder, depth=3):
-    """Whether `folder` holds a script a TA could run (_script)."""
-    files = _plain_files(folder, depth, lambda found: False)
+def _runnable(folder, depth=3, skipped=()):
+    """Whether `folder` holds a script a TA could run (_script), its
+    folders `skipped` aside."""
+    files = _plain_files(folder, depth, lambda found: False, skipped)
     modules = _modules(files)
     return any(_script(entry, modules) for entry in files)
 
@@ -545,7 +589,10 @@ def copy(package: Package, workspace):
     """The package, and the submission's others, copied into `workspace`/src
     (links copied as links, never followed)."""
     targets = [package.name] + [f'other{i}' for i in range(1, len(package.others) + 1)]
+    def left_out(folder, names):
+        here = folder == package.folder
+        return _left_out(folder, names) | {n for n in names if here and n in package.left}
     for folder, target in zip([package.folder] + package.others, targets):
         shutil.copytree(folder, os.path.join(workspace, 'src', target), symlinks=True,
-                        ignore=_left_out)
+                        ignore=left_out)
     return os.path.join(workspace, 'src', package.name)

@@ -117,7 +117,7 @@ def test_scripts_handed_in_without_a_package_xml_are_wrapped_in_a_package_of_the
                     'hw/launch/turtle.launch':
                         '<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/></launch>'})
     package = find(str(tmp_path / 'hw'))
-    assert (package.name, package.problem, package.loose) == (submission.LOOSE, '', True)
+    assert (package.name, package.problem, bool(package.loose)) == (submission.LOOSE, '', True)
     assert package.launch == 'launch/turtle.launch'
     copied = copy(package, str(tmp_path / 'ws'))
     submission.wrap(copied)
@@ -282,7 +282,7 @@ def test_loose_ros_2_scripts_are_refused_in_words_and_a_rospy_one_without_its_li
         'turtlesim_ros2.py imports rclpy: it is ROS 2 code, and this lab is ROS 1 (Noetic), '
         'where no ROS 2 node runs; write it with rospy, in a catkin package')
     package = find(str(tmp_path / 'one'))
-    assert (package.name, package.problem, package.loose) == (submission.LOOSE, '', True)
+    assert (package.name, package.problem, bool(package.loose)) == (submission.LOOSE, '', True)
 
 
 def test_a_rospy_script_handed_in_without_its_line_or_mode_is_run_with_python3(tmp_path):
@@ -380,3 +380,32 @@ def test_a_rostopic_pub_that_waits_is_found_in_the_scripts_started(tmp_path):
             'stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits; '
             'scripts/plain line 3: rostopic pub without -1 publishes once and waits to be '
             'stopped (Ctrl-C), so no line after it ran; -1 publishes once and exits')
+
+
+def test_a_course_repository_whose_package_names_no_turtlesim_is_graded_by_its_script(tmp_path):
+    """A course's repository of every project, handed in whole (a real
+    one's): the initials script loose at its top, and a package of another
+    project (a turtlebot's) that names no turtlesim. A TA grades the
+    script: it is wrapped as scripts handed in without a package.xml are,
+    and the folders that name no turtlesim are left out of the copy, and
+    noted. Where the package names turtlesim, it is the lab, as before."""
+    node = '#!/usr/bin/env python3\nimport rospy\nrospy.init_node("n")\n'
+    make(tmp_path, {'repo/my_initials.py': node + 'topic = "/turtle1/cmd_vel"\n',
+                    'repo/README.md': 'every project',
+                    'repo/project_2/task_1.py': node + 'topic = "/cmd_vel"\n',
+                    'repo/project_3/nodes/package.xml': PACKAGE.format('turtle_description'),
+                    'repo/project_3/nodes/detection.py': node})
+    repo = str(tmp_path / 'repo')
+    package = find(repo)
+    assert (package.name, package.problem, package.left) == \
+        (submission.LOOSE, '', ['project_2', 'project_3'])
+    assert package.loose == (f'no package of {repo} names turtlesim (project_3/nodes '
+                             f'(turtle_description)), and its scripts beside them do: the lab '
+                             f'is those scripts, with no package.xml')
+    assert package.notes == [f'left out {name}: nothing in it names turtlesim (another project, '
+                             f'not the lab)' for name in ('project_2', 'project_3')]
+    assert sorted(os.listdir(copy(package, str(tmp_path / 'ws')))) == ['README.md',
+                                                                       'my_initials.py']
+    make(tmp_path, {'repo/project_3/nodes/package.xml': PACKAGE.format('turtle_description')
+                    .replace('</package>', '<depend>turtlesim</depend></package>')})
+    assert find(repo).name == 'turtle_description' and find(repo).left == []
