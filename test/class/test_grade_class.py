@@ -59,7 +59,7 @@ CONCLUSIONS = {
     'c21_hana': ('H', 'H', 'pass', 'every criterion met'),     # C++ (roscpp)
     # C++ including turtlesim/Pose.h without naming turtlesim, tf, numpy and
     # turtle_teleop_key, as a course's Noetic machine has them; no talker
-    'c22_kenji': ('K', 'K', 'pass', 'nothing on /chatter within 5 s of P and Enter'),
+    'c22_kenji': ('K', 'K', 'pass', 'no "P" on /chatter within 5 s of P and Enter'),
     'x_late': ('', 'I', 'fail', 'no letter is expected'),
 }
 

@@ -319,7 +319,7 @@ def test_a_prompt_that_asks_for_the_letter_is_typed_it_and_the_row_says_so(grade
         tests = {t['name']: t for t in json.load(f)['tests']}
     talker = tests['The talker publishes P on a key press']
     assert talker['status'] == 'failed' and talker['output'] == (
-        "nothing on /chatter within 5 s of P and Enter; a node waited for a line on the "
+        "no \"P\" on /chatter within 5 s of P and Enter; a node waited for a line on the "
         "terminal ('a letter to draw (L):'): the grader typed L and Enter, as a TA would"), talker
     assert tests['The letter drawn is the expected one']['output'] == 'drew L, as expected'
 

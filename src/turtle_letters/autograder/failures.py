@@ -24,10 +24,14 @@ OTHER_WORLD = ((re.compile(r"env: .python2.: No such file"),
                 'that is ROS 2, and this lab is ROS 1 (Noetic): write it with rospy'),
                (re.compile(r"^SyntaxError: Missing parentheses in call to .print."),
                 "that is Python 2's print, and ROS Noetic runs Python 3: call print(...)"),
+               (re.compile(r"^SyntaxError: multiple exception types must be parenthesized"),
+                "that is Python 2's `except Error, e`, and ROS Noetic runs Python 3: write "
+                "`except Error as e`"),
                (re.compile(r"^TabError: "),
                 'Python 2 took tabs and spaces mixed, and ROS Noetic runs Python 3: indent '
                 'with spaces only'))
 NO_TALKER = 'no node of the run published on /chatter (a talker publishes "P" there when P is typed)'
+OTHER_WORDS = 40    # characters of another message than "P" on /chatter a row shows
 ARGUMENT_ERRORS = ('IndexError', 'ValueError')    # of a line that reads sys.argv: no arguments
 # how the lines roslaunch prints of its own begin
 ROSLAUNCH_LINES = ('process[', '[', 'setting /', 'ROS_MASTER_URI', '...', 'started roslaunch',
@@ -233,13 +237,19 @@ def _own_frame(text, work):
     return path[len(inside):], number, code
 
 
-def talker_failure(output, work, talked=True):
-    """Why the talker said nothing: the first node to die and its error
-    line; else, where no node `talked` (published on /chatter), that none
-    did (a real class's scripts had the last error line anywhere, a
-    rosservice call's, named as the talker's); else that error line."""
-    return first_death(output, work) or \
-        (last_error(output, node_logs(work)) if talked else NO_TALKER)
+def talker_failure(output, work, talked=True, said=None):
+    """Why the talker said nothing: where a node of the run `said` other
+    words on /chatter ((node, words), never "P": a real package's copy of
+    ROS's tutorial talker, its "hello world"), that, and any death; else the
+    first node to die and its error line; else, where no node `talked`
+    (published on /chatter), that none did (a real class's scripts had the
+    last error line anywhere, a rosservice call's, named as the talker's);
+    else that error line."""
+    death = first_death(output, work)
+    if said:
+        words = said[1][:OTHER_WORDS].rstrip()
+        return '; '.join(filter(None, [f'{said[0]} published {words!r} there, never "P"', death]))
+    return death or (last_error(output, node_logs(work)) if talked else NO_TALKER)
 
 
 def why_still(output, work, listeners, offered=None, events=(), waiting=''):

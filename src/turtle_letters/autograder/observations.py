@@ -331,6 +331,15 @@ def _offered(services, ours):
     return {node: sorted(found) for node, found in offered.items()}
 
 
+def other_words(events):
+    """(node, words) of the first message on /chatter from a node not the
+    grader's, where none of theirs was "P"; None otherwise."""
+    said = [e for e in events if e['kind'] == 'chatter' and e['sender'] != WATCHER]
+    if any(e['data'].strip() == 'P' for e in said):
+        return None
+    return (said[0]['sender'], said[0]['data']) if said else None
+
+
 def talkers(events):
     """Every node not the grader's that the graph saw publish on /chatter."""
     return _ever_in_graph(events, 'chatter_publishers')

@@ -534,7 +534,7 @@ def _watch(lab, limits, result):
                              f'{", ".join(early)} published "P" on /chatter before any key was '
                              f'typed: the talker does not wait for the key')
     else:
-        result.talker = Step(False, f'nothing on /chatter within {limits.talker:g} s of P and '
+        result.talker = Step(False, f'no "P" on /chatter within {limits.talker:g} s of P and '
                                     f'Enter')
         if not watcher.publish_p():
             result.talker = result.talker._replace(says=(
@@ -645,7 +645,8 @@ def _explain(result, terminal, work):
     if result.launch is not None and result.launch.says == 'the lab did not come up':
         result.launch = result.launch._replace(says=why_not_launched(text, result.events, work))
     if result.talker is not None and not result.talker.ok:
-        why = talker_failure(text, work, talked=not _no_talker(result))
+        why = talker_failure(text, work, talked=not _no_talker(result),
+                             said=seen.other_words(result.events))
         if why:
             result.talker = result.talker._replace(says=f'{result.talker.says}: {why}')
     result.waiting = waiting_publishers(*_started_scripts(result, work))

@@ -155,6 +155,13 @@ def test_a_death_says_where_in_the_package_its_error_was_raised(tmp_path):
         "sagar_initial died: SyntaxError: Missing parentheses in call to 'print'. Did you mean "
         "print(...)? (VS/src/initials.py, line 20); that is Python 2's print, and ROS Noetic "
         "runs Python 3: call print(...)")
+    caught = python2.replace('print "x"', 'except rospy.ServiceException, e:').replace(
+        "Missing parentheses in call to 'print'. Did you mean print(...)?",
+        'multiple exception types must be parenthesized')
+    assert talker_failure(caught, work) == (
+        'sagar_initial died: SyntaxError: multiple exception types must be parenthesized '
+        "(VS/src/initials.py, line 20); that is Python 2's `except Error, e`, and ROS Noetic "
+        'runs Python 3: write `except Error as e`')
 
 
 def test_a_script_that_wants_its_arguments_says_so(tmp_path):
@@ -261,3 +268,15 @@ def test_nodes_that_die_together_each_get_their_own_traceback(tmp_path):
         'draw_m1 died: TabError: inconsistent use of tabs and spaces in indentation '
         '(m_lab/src/draw_m.py, line 12); Python 2 took tabs and spaces mixed, and ROS Noetic '
         'runs Python 3: indent with spaces only')
+
+
+def test_a_talker_of_other_words_is_why_no_p_came_before_any_death(tmp_path):
+    """A real package handed in ROS's tutorial talker beside its letter's
+    script: it published "hello world ..." on /chatter, never "P", and the
+    row named an unrelated node's death (a Python 2 client) as the
+    talker's. The words come first; a death is still said after them."""
+    said = ('/talker_12_34', 'hello world 1796590302.46876 and a long tail of words')
+    assert talker_failure(DIED, str(tmp_path), said=said) == (
+        "/talker_12_34 published 'hello world 1796590302.46876 and a long' there, never \"P\"; "
+        "talker died: NameError: name 'raw_input' is not defined")
+    assert talker_failure('all fine\n', str(tmp_path), said=said).endswith('never "P"')

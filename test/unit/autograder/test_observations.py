@@ -4,9 +4,9 @@ import pytest
 
 from turtle_letters.autograder.observations import (GONE_STILL, SCRIPT_PAUSE, chatter_peak,
                                                    drawing, drew, fight, looked_for_from,
-                                                   moved, one_driver,
+                                                   moved, one_driver, other_words,
                                                    own_triggers, stood_for, strokes, roles,
-                                                   trigger, unheard, unprompted)
+                                                   trigger, unheard, unprompted, WATCHER)
 
 TICK = 0.016
 PEN = [179, 184, 255, 3]
@@ -402,3 +402,12 @@ def test_where_each_turtle_appeared_is_kept_for_reading_past_a_lead_in():
         dict(k='spawn', t=11.0, turtle='t3', x=9.0, y=9.0, theta=0.0)]
     d = drawing(record, [graph()], since=0.5, settle=2.0, until=12.0)
     assert d.homes == [(2.0, 3.0), (5.544445, 5.544445)]
+
+
+def test_other_words_on_chatter_where_none_of_the_runs_was_p():
+    said = [dict(kind='chatter', t=1.0, sender=WATCHER, data='P'),
+            dict(kind='chatter', t=1.5, sender='/talker_1', data='hello world 1'),
+            dict(kind='chatter', t=1.6, sender='/talker_1', data='hello world 2')]
+    assert other_words(said) == ('/talker_1', 'hello world 1')
+    assert other_words(said + [dict(kind='chatter', t=2.0, sender='/keys', data=' P')]) is None
+    assert other_words(said[:1]) is None
