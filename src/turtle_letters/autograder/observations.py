@@ -177,10 +177,11 @@ def drawing(record, events, since, settle, until=math.inf, script_until=None,
     """The drawing that begins with the first move at or after `since`
     (the record's first line is the simulator's own turtle1), to a pause
     that ends it (pause_ends: `script_until`, t a shell script of the
-    submission was last seen running; `gone`, t all of it had ended). Its ink is what a canvas showed:
-    the one left (`canvas` None), else the one begun by the drawing's
-    clear or reset numbered `canvas` (-1: the first canvas, before any),
-    one of those a drawing that never ended wiped (Drawing.fullest)."""
+    submission was last seen running; `gone`, t all of it had ended). Its
+    ink is what a canvas showed: the one left (`canvas` None), else the one
+    begun by the drawing's clear or reset numbered `canvas` (-1: the first
+    canvas, before any), one of those a drawing that never ended wiped
+    (Drawing.fullest)."""
     first = next(iter(moves(record, since, until)), None)
     if first is None:
         return Drawing([], None, None, 0, impostors(events))
