@@ -72,7 +72,7 @@ class Run:
         self.finished = None    # t the run stopped watching
         self.limit_s = None     # s the drawing was watched for at most (limits.drawing)
         self.script_until = None    # t a shell script it started was last seen running
-        self.gone = None        # t roslaunch was seen ended, and every process of its sandbox
+        self.gone = None        # t roslaunch was seen ended (every process of its sandbox with it)
         self.waiting = ''       # where a script it started stops at a rostopic pub, in words
         self.fought = ''        # how the executables started together fought, if they did
         self.typed = ''         # the letters the grader typed at a prompt, if it did
