@@ -142,15 +142,15 @@ def reread(student_folder):
 
 def each_alone(expected, rubric, box, facts, run):
     """A TA's try: executables started together (no launch file) that did
-    not draw the letters run each alone in a fresh world, those that drove
-    a turtle first, limits.alone of them at most, until one draws them; the
-    best (facts, run) kept. Not where one of them alone acted on the
+    not draw the letters run each alone in a fresh world, in a TA's order
+    (session.drivers_first), limits.alone of them at most, until one draws
+    them; the best (facts, run) kept. Not where one of them alone acted on the
     turtles: alone, it draws the same. The alone runs share one drawing's
     limit, each watched for what is left of it: a package whose nodes never
     stop costs the class two limits, not one for each node."""
     first, best = run, rubrics.grade(facts, rubric).score
     fought = len(first.executables) > 1 and not seen.one_driver(first.record)
-    names = session.drivers_first(first)[:rubric.limits.alone] if fought else []
+    names = session.drivers_first(first, box)[:rubric.limits.alone] if fought else []
     left = rubric.limits.drawing
     for i, name in enumerate(names):
         if box.stopped or len(rubrics.credited(facts)) == len(expected):

@@ -22,7 +22,8 @@ from .processes import ControllerCpu, Reader, RunningScripts, reading_input
 from .rubric import Limits
 from .submission import (LOOSE, MAX_NODES, Package, bare_shell, copy, made_executable,
                          nodes, scripts, sources_built_by_nothing, started_packages,
-                         unbuilt_scripts, unstartable, waiting_publishers, wrap)
+                         turtles_named, unbuilt_scripts, unstartable, waiting_publishers,
+                         wrap)
 from .world import (Lab, course_environment, interpreter_stand_ins, stand_in, stand_in_started,
                     terminal_stand_ins)
 
@@ -394,13 +395,21 @@ def generated_launch(box, package, names):
     return path
 
 
-def drivers_first(run):
-    """The executables a run started for want of a launch file, those whose
-    node acted on the turtles first (the simulator's account: a TA tries
-    the controllers alone first), each part in name order."""
+def drivers_first(run, box):
+    """The executables a run started for want of a launch file, in the order
+    a TA tries them alone: those whose node acted on the turtles first (the
+    simulator's account: the controllers before a keyboard); within each
+    part, those whose text (the package's copy in `box`) names more
+    turtles first (turtles_named: a course's two scripts, one of turtle1
+    for the first letter, one spawning turtle2 for the second, are tried
+    the whole drawing first), then in name order."""
     acted = seen.actors(run.record)
-    first = [name for i, name in enumerate(run.executables) if f'/{_node(name, i)}' in acted]
-    return first + [name for name in run.executables if name not in first]
+    named = turtles_named(_copied(box, run.package), run.executables)
+
+    def order(place):
+        i, name = place
+        return f'/{_node(name, i)}' not in acted, -named.get(name, 0)
+    return [name for _, name in sorted(enumerate(run.executables), key=order)]
 
 
 def _node(executable, i):

@@ -485,6 +485,19 @@ def bare_shell(folder, depth=3):
                   if entry.name.endswith('.sh') and not _starts_with_shebang(entry.path))
 
 
+def turtles_named(folder, names, depth=3):
+    """{name: how many turtles (turtle1, turtle2, ...) its text names}, of the
+    files of `names` in a package's folders: what a TA sees in a script
+    before running it (a course's script that draws its second letter with
+    a turtle of its own names turtle2; a compiled node, 0)."""
+    named = {}
+    for entry in _plain_files(folder, depth, lambda found: False):
+        if entry.name in names and entry.name not in named:
+            text = read_plain(entry.path, MAX_BYTES) or b''
+            named[entry.name] = len(set(re.findall(rb'\bturtle\d+\b', text)))
+    return named
+
+
 def waiting_publishers(folder, names, depth=3):
     """Where the shell scripts of `names` in a package's folders run a `rostopic pub`
     that never exits, in words ('scripts/draw.sh line 1: ...'; '' if none),

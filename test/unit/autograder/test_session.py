@@ -243,17 +243,50 @@ def test_a_launch_roslaunch_refused_a_node_of_is_waited_for_only_a_while_after()
     assert refused.waited_out()
 
 
-def test_executables_that_drove_together_are_tried_alone_first():
+def package_copy(tmp_path, files):
+    """A sandbox's work folder holding the copy of a package `lab` of `files`
+    ({path in it: text}), and a run of it: (box, run)."""
+    for path, text in files.items():
+        (tmp_path / 'ws' / 'src' / 'lab' / path).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / 'ws' / 'src' / 'lab' / path).write_text(text)
+    return SimpleNamespace(work=str(tmp_path)), SimpleNamespace(
+        package=SimpleNamespace(name='lab'), executables=sorted(os.path.basename(path)
+                                                                for path in files), record=[])
+
+
+def test_executables_that_drove_together_are_tried_alone_first(tmp_path):
     """The generated launch file's node names (of the file, and its place)
     tell which executable acted (the simulator's `by` lines):
     spin_forever.py and n_controller.py did, keyboard.py only talked."""
-    acted = [dict(k='by', t=1.0, node='/spin_forever2'),
-             dict(k='by', t=1.2, node='/n_controller1')]
-    run = SimpleNamespace(executables=['keyboard.py', 'n_controller.py', 'spin_forever.py'],
-                          record=acted)
-    assert drivers_first(run) == ['n_controller.py', 'spin_forever.py', 'keyboard.py']
+    box, run = package_copy(tmp_path, {'keyboard.py': '', 'n_controller.py': '',
+                                       'spin_forever.py': ''})
+    run.record = [dict(k='by', t=1.0, node='/spin_forever2'),
+                  dict(k='by', t=1.2, node='/n_controller1')]
+    assert drivers_first(run, box) == ['n_controller.py', 'spin_forever.py', 'keyboard.py']
     run.record = [dict(k='by', t=1.0, node='/keyboard1')]   # a name that is not its place
-    assert drivers_first(run) == run.executables
+    assert drivers_first(run, box) == run.executables
+
+
+def test_of_scripts_that_drove_together_the_one_naming_more_turtles_is_tried_alone_first(
+        tmp_path):
+    """A course's two scripts of `rostopic pub -1` lines, their nodes
+    anonymous: one draws the first letter with turtle1, the other spawns
+    turtle2 for the second letter too. With two letters expected, the
+    second is the drawing a TA tries first (a real class's five of six
+    were run alone in name order, the first of turtle1 alone for nothing)."""
+    one = 'rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "[2, 0, 0]" "[0, 0, 0]"\n'
+    two = 'rosservice call /spawn 8 5 0 ""\nrosservice call /turtle2/set_pen 0 255 0 3 0\n' + \
+        one + one.replace('turtle1', 'turtle2')
+    box, run = package_copy(tmp_path, {'scripts/letter.sh': one * 3,
+                                       'scripts/letters_two.sh': two})
+    run.record = [dict(k='by', t=1.0, node='/rostopic_2171_1796590448'),
+                  dict(k='by', t=1.1, node='/rosservice_2170_1796590447')]
+    assert drivers_first(run, box) == ['letters_two.sh', 'letter.sh']
+    (tmp_path / 'ws' / 'src' / 'lab' / 'scripts' / 'letters_two.sh').unlink()
+    (tmp_path / 'elsewhere.sh').write_text(two)
+    os.symlink(tmp_path / 'elsewhere.sh', tmp_path / 'ws' / 'src' / 'lab' / 'scripts' /
+               'letters_two.sh')
+    assert drivers_first(run, box) == ['letter.sh', 'letters_two.sh']   # a link is not read
 
 
 def test_a_node_the_grader_started_that_died_says_why_beside_how_it_was_started():

@@ -40,7 +40,8 @@ def run_of(name, executables=(), drivers=()):
     cmd_vel, its log."""
     graph = dict(kind='graph', t=1.0, cmd_vel_publishers=list(drivers))
     by = [dict(k='by', t=1.0, node=node) for node in drivers]
-    return SimpleNamespace(name=name, build=OK, launch=Step(False, f'{name} launched'),
+    return SimpleNamespace(name=name, package=SimpleNamespace(name='lab'), build=OK,
+                           launch=Step(False, f'{name} launched'),
                            waited=OK, talker=OK, stuck='', waiting='', limit='', broken='',
                            fought='',
                            events=[graph],
@@ -70,8 +71,10 @@ def test_executables_that_drew_nothing_together_run_each_alone_until_one_draws(
         tried.append(name), run_of(name))[1])
     l_drawn = Drawing([L_PATH], 1.0, 5.0, 200, [])
     monkeypatch.setattr(driver, 'observed', observing({'b.py': l_drawn}))
+    place = Place()
+    place.box.work = str(tmp_path)      # no copy of the package: no turtles named
     row, facts = driver.grade(Student('s1', 'Lena', 'L', str(tmp_path)), RUBRIC,
-                              str(tmp_path / 'out'), Place())
+                              str(tmp_path / 'out'), place)
     assert tried == ['a.py', 'b.py']
     assert facts.launch.says == 'b.py launched' and row.drawn == 'L'
     with open(tmp_path / 'out' / 's1' / 'log.txt') as f:
