@@ -271,9 +271,9 @@ def test_of_scripts_that_drove_together_the_one_naming_more_turtles_is_tried_alo
         tmp_path):
     """A course's two scripts of `rostopic pub -1` lines, their nodes
     anonymous: one draws the first letter with turtle1, the other spawns
-    turtle2 for the second letter too. With two letters expected, the
-    second is the drawing a TA tries first (a real class's five of six
-    were run alone in name order, the first of turtle1 alone for nothing)."""
+    turtle2 for the second letter too: the second, the whole drawing, is
+    tried first (a real class's five of six were run alone in name order,
+    the script of turtle1 alone first, for nothing). A link is not read."""
     one = 'rostopic pub -1 /turtle1/cmd_vel geometry_msgs/Twist -- "[2, 0, 0]" "[0, 0, 0]"\n'
     two = 'rosservice call /spawn 8 5 0 ""\nrosservice call /turtle2/set_pen 0 255 0 3 0\n' + \
         one + one.replace('turtle1', 'turtle2')
