@@ -390,6 +390,21 @@ def table(results, sim):
 
 
 def main():
+    args = _arguments()
+    os.makedirs(args.out, exist_ok=True)
+    sim_kind = open(os.path.join(os.environ['WS'], '.simulator')).read().strip()
+    graded = _graded_groups(args)      # before the bench's own roscore starts, as each has its own
+    results = {**_live_groups(args, sim_kind), **graded}
+    results['machine'] = {
+        'cores': os.cpu_count(), 'cpu': _cpu_model(), 'kernel': platform.release(),
+        'python': platform.python_version(), 'ros': os.environ.get('ROS_DISTRO', 'debian'),
+        'simulator': sim_kind, 'letter': args.letter, 'size_m': args.size, 'reps': args.reps,
+        'date': time.strftime('%Y-%m-%d %H:%M:%S'),
+    }
+    _write(results, args, sim_kind)
+
+
+def _arguments():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--reps', type=int, default=3)
     parser.add_argument('--letter', default='N')
@@ -426,9 +441,11 @@ def main():
     args.letter = args.letter.upper()
     if BUILTIN.glyph(args.letter) is None or len(args.letter) != 1:
         parser.error(f'--letter {args.letter!r}: one of A-Z, 0-9')
-    os.makedirs(args.out, exist_ok=True)
-    sim_kind = open(os.path.join(os.environ['WS'], '.simulator')).read().strip()
+    return args
 
+
+def _graded_groups(args):
+    """The groups that start their own worlds (or none): reading, and grading classes."""
     graded = {}
     if args.recognition:
         singles, rows = (int(n) for n in args.recognition.split(','))
@@ -445,8 +462,13 @@ def main():
         print("bench: what the sandbox costs, Lena's L graded 3 times in it and without...",
               flush=True)
         graded['sandbox_cost'] = sandbox_cost()
+    return graded
+
+
+def _live_groups(args, sim_kind):
+    """The groups drawn on one roscore and simulator of the bench's own, started
+    here and stopped whatever happens."""
     processes = Processes(args.out)
-    loads = []
     try:
         processes.start('roscore', 'roscore', '-p', str(PORT))
         sim = processes.start('turtlesim', 'rosrun', 'turtlesim', 'turtlesim_node',
@@ -458,61 +480,68 @@ def main():
         chatter = rospy.Publisher('/chatter', String, queue_size=10)
         print(f'bench: simulator {sim_kind}, {os.cpu_count()} cores; measuring the idle simulator...',
               flush=True)
-        results = {'simulator_figures': simulator_figures(processes, sim.pid, recorder),
-                   'groups': [], **graded}
-        for turtles in filter(None, args.classroom.split(',')):
-            print(f'bench: classroom, {turtles} turtles at once...', flush=True)
-            results.setdefault('classroom', []).append(
-                classroom_run(processes, sim.pid, int(turtles)))
-        for run in filter(None, args.viewer.split(',')):
-            turtles, _, pages = run.partition('x')
-            print(f'bench: the viewer, {turtles} turtles drawing, {pages or 10} pages...',
-                  flush=True)
-            results.setdefault('viewer', []).append(
-                viewer_run(processes, int(turtles), int(pages or 10)))
-        if args.viewer_soak:
-            print(f'bench: the viewer, 30 turtles drawing for {args.viewer_soak:g} s...', flush=True)
-            results['viewer_soak'] = soak_run(processes, 30, args.viewer_soak)
-        for delay_ms in filter(None, args.latency.split(',')):
-            print(f'bench: each mode over a network {delay_ms} ms late each way...', flush=True)
-            results.setdefault('latency', []).extend(
-                latency_run(processes, recorder, chatter, int(delay_ms)))
-        if args.parallel_word == 'yes':
-            print('bench: a parallel word, and its slowest letter alone...', flush=True)
-            results['parallel_word'] = parallel_word_run(processes)
-        for load in args.loads.split(','):
-            if load == 'loaded':
-                loads.append(Load(processes, limit=3600))
+        results = {'simulator_figures': simulator_figures(processes, sim.pid, recorder)}
+        _room_groups(args, processes, sim.pid, recorder, chatter, results)
+        results['groups'] = _drawing_groups(args, processes, sim.pid, recorder, chatter, results)
+        return results
+    finally:
+        rospy.signal_shutdown('bench done')
+        processes.stop_all()
+
+
+def _room_groups(args, processes, sim_pid, recorder, chatter, results):
+    """Many turtles at once, the viewer, and a slow network: into `results`."""
+    for turtles in filter(None, args.classroom.split(',')):
+        print(f'bench: classroom, {turtles} turtles at once...', flush=True)
+        results.setdefault('classroom', []).append(classroom_run(processes, sim_pid, int(turtles)))
+    for run in filter(None, args.viewer.split(',')):
+        turtles, _, pages = run.partition('x')
+        print(f'bench: the viewer, {turtles} turtles drawing, {pages or 10} pages...', flush=True)
+        results.setdefault('viewer', []).append(
+            viewer_run(processes, int(turtles), int(pages or 10)))
+    if args.viewer_soak:
+        print(f'bench: the viewer, 30 turtles drawing for {args.viewer_soak:g} s...', flush=True)
+        results['viewer_soak'] = soak_run(processes, 30, args.viewer_soak)
+    for delay_ms in filter(None, args.latency.split(',')):
+        print(f'bench: each mode over a network {delay_ms} ms late each way...', flush=True)
+        results.setdefault('latency', []).extend(
+            latency_run(processes, recorder, chatter, int(delay_ms)))
+    if args.parallel_word == 'yes':
+        print('bench: a parallel word, and its slowest letter alone...', flush=True)
+        results['parallel_word'] = parallel_word_run(processes)
+
+
+def _drawing_groups(args, processes, sim_pid, recorder, chatter, results):
+    """Each mode's runs, then the words and the SVG, idle and with every core
+    busy (the load stopped whatever happens): the mode groups; the words and
+    SVG go into `results`."""
+    groups = []
+    for load in args.loads.split(','):
+        loads = [Load(processes, limit=3600)] if load == 'loaded' else []
+        try:
             for mode in filter(None, args.modes.split(',')):
                 runs = []
                 for rep in range(args.reps):
                     print(f'bench: {mode} {load} run {rep + 1}/{args.reps}...', flush=True)
-                    runs.append(one_run(args, processes, recorder, chatter, sim.pid, mode))
-                results['groups'].append({'mode': mode, 'load': load, 'runs': runs,
-                                          'summary': summarise(runs)})
+                    runs.append(one_run(args, processes, recorder, chatter, sim_pid, mode))
+                groups.append({'mode': mode, 'load': load, 'runs': runs,
+                               'summary': summarise(runs)})
             for font in filter(None, args.words.split(',')):
                 print(f'bench: {WORD!r} in {font}, smooth, {load}...', flush=True)
                 results.setdefault('words', []).append(
                     dict(word_run(processes, recorder, font), load=load))
             if args.svg == 'yes':
                 print(f'bench: doc/flower.svg, smooth, {load}...', flush=True)
-                results.setdefault('svg', []).append(
-                    dict(svg_run(processes, recorder), load=load))
+                results.setdefault('svg', []).append(dict(svg_run(processes, recorder), load=load))
+        finally:
             for load_process in loads:
                 load_process.stop()
-            loads = []
-    finally:
-        for load_process in loads:
-            load_process.stop()
-        rospy.signal_shutdown('bench done')
-        processes.stop_all()
+    return groups
 
-    results['machine'] = {
-        'cores': os.cpu_count(), 'cpu': _cpu_model(), 'kernel': platform.release(),
-        'python': platform.python_version(), 'ros': os.environ.get('ROS_DISTRO', 'debian'),
-        'simulator': sim_kind, 'letter': args.letter, 'size_m': args.size, 'reps': args.reps,
-        'date': time.strftime('%Y-%m-%d %H:%M:%S'),
-    }
+
+def _write(results, args, sim_kind):
+    """The table on the terminal and in bench.txt, every figure in bench.json,
+    the paths over the ideal strokes in bench.png."""
     text = table(results, sim_kind)
     print('\n' + text)
     with open(os.path.join(args.out, 'bench.txt'), 'w') as f:
