@@ -513,8 +513,8 @@ class Refused:
 def _watch(lab, limits, result):
     """Launched at `started`: up once a node listens on /chatter, a turtle
     moves or a prompt waits (_up); P typed after the turtle stood for
-    limits.stand; the drawing watched from the launch (a turtle that did
-    not wait), the trigger, or the letters typed at a prompt (_typed_letters)."""
+    limits.stand (_trigger); the drawing watched from the launch (a turtle
+    that did not wait), the trigger, or the letters typed at a prompt."""
     terminal, watcher, alive = lab.terminal, lab.watcher, lab.going
     events, record = watcher.events, lab.world.events
     started = time.monotonic()
@@ -530,8 +530,33 @@ def _watch(lab, limits, result):
     alive = _noting(scripts, alive)
     wait_until(lambda: False, limits.stand, alive)
     result.waited = _waited(record, started, limits.stand)
-    cpu, typed = ControllerCpu(terminal.process.pid, events), time.monotonic()
-    shown = terminal.output.size
+    cpu, shown = ControllerCpu(terminal.process.pid, events), terminal.output.size
+    asked = _trigger(lab, limits, result, started, shown, alive)
+    since = result.since = asked or seen.looked_for_from(record, started, result.trigger)
+    result.limit_s = limits.drawing
+    if wait_until(lambda: seen.moved(record, since), limits.start, alive):
+        wait_until(lambda: _fought(result, record, since, scripts) or
+                   _stood(record, since, limits.settle, scripts), limits.drawing, alive)
+        if not result.fought and terminal.process.poll() is not None:
+            # roslaunch ended with its last node (a script of `rostopic pub -1`s): the
+            # turtle's last command plays out, and it is seen to stand; in bubblewrap's
+            # PID namespace, nothing of the submission outlives roslaunch
+            result.gone = time.monotonic() if lab.box.isolated else None
+            wait_until(lambda: _stood(record, since, limits.settle, scripts, result.gone),
+                       limits.settle + 1, lab.watchable)
+    else:
+        result.still_from = shown
+    result.cpu_pct, result.script_until = cpu.share(), scripts.until
+
+
+def _trigger(lab, limits, result, started, shown, alive):
+    """P and Enter typed on the lab's terminal (launched at `started`, its
+    text `shown` so far), as a TA triggers it: the talker's "P" on /chatter
+    is the trigger, else the grader's own, published after limits.talker;
+    where a prompt waits, the roster's letters are typed (_typed_letters).
+    Returns when those were typed, else None."""
+    terminal, watcher, typed = lab.terminal, lab.watcher, time.monotonic()
+    events = watcher.events
     terminal.type(b'P')
     time.sleep(0.2)
     terminal.type(b'\r')
@@ -553,21 +578,7 @@ def _watch(lab, limits, result):
         result.trigger = seen.trigger(events, typed, by_grader=True) or time.monotonic()
     asked = _typed_letters(lab, limits, result, typed, shown)
     result.trigger = asked or result.trigger
-    since = result.since = asked or seen.looked_for_from(record, started, result.trigger)
-    result.limit_s = limits.drawing
-    if wait_until(lambda: seen.moved(record, since), limits.start, alive):
-        wait_until(lambda: _fought(result, record, since, scripts) or
-                   _stood(record, since, limits.settle, scripts), limits.drawing, alive)
-        if not result.fought and terminal.process.poll() is not None:
-            # roslaunch ended with its last node (a script of `rostopic pub -1`s): the
-            # turtle's last command plays out, and it is seen to stand; in bubblewrap's
-            # PID namespace, nothing of the submission outlives roslaunch
-            result.gone = time.monotonic() if lab.box.isolated else None
-            wait_until(lambda: _stood(record, since, limits.settle, scripts, result.gone),
-                       limits.settle + 1, lab.watchable)
-    else:
-        result.still_from = shown
-    result.cpu_pct, result.script_until = cpu.share(), scripts.until
+    return asked
 
 
 def _noting(scripts, alive):

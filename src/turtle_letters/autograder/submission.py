@@ -203,18 +203,7 @@ def find(top) -> Package:
              for path in special]
     named = [(f, package_name(f)) for f in package_folders(top)]
     if not named:
-        ros2 = _ros2_script(top)
-        if ros2:
-            return Package('', '', None, f'{ros2} imports rclpy: it is ROS 2 code, and this lab '
-                           f'is ROS 1 (Noetic), where no ROS 2 node runs; write it with rospy, '
-                           f'in a catkin package', notes=notes)
-        if not _runnable(top):
-            return Package('', '', None, f'no package.xml in {top}', notes=notes)
-        # a TA runs the scripts of a folder handed in without its package.xml
-        # (`bash turtleletterstwo.sh`, as a real class's instructions said)
-        launch = lab_launch(top, {LOOSE: top})[1]
-        return Package(LOOSE, top, launch, '', notes=notes,
-                       loose=f'no package.xml in {top}: nothing a catkin workspace builds')
+        return _without_package_xml(top, notes)
     ros2 = {f: ros2_build(f) for f, _ in named}
     ours = [(f, n) for f, n in named if n != SIMULATOR and not ros2[f]]
     if not ours:
@@ -230,6 +219,31 @@ def find(top) -> Package:
                        notes=notes)
     launch = lab_launch(folder, packages)[1]
     wanted = needed(name, packages, launch and os.path.join(folder, launch))
+    others = _built_beside(top, named, ros2, (folder, name), wanted, notes)
+    return Package(name, folder, launch, '', others, notes)
+
+
+def _without_package_xml(top, notes):
+    """A folder handed in with no package.xml: ROS 2 scripts said so, else
+    its scripts run as a TA runs them (`bash turtleletterstwo.sh`, as a real
+    class's instructions said), else nothing to grade."""
+    ros2 = _ros2_script(top)
+    if ros2:
+        return Package('', '', None, f'{ros2} imports rclpy: it is ROS 2 code, and this lab '
+                       f'is ROS 1 (Noetic), where no ROS 2 node runs; write it with rospy, '
+                       f'in a catkin package', notes=notes)
+    if not _runnable(top):
+        return Package('', '', None, f'no package.xml in {top}', notes=notes)
+    launch = lab_launch(top, {LOOSE: top})[1]
+    return Package(LOOSE, top, launch, '', notes=notes,
+                   loose=f'no package.xml in {top}: nothing a catkin workspace builds')
+
+
+def _built_beside(top, named, ros2, graded, wanted, notes):
+    """The folders of the other packages (`named`) that the `graded` one
+    (folder, name) needs (`wanted`), built beside it; each left out is
+    noted in `notes`, with why."""
+    folder, name = graded
     others, kept = [], {name: folder}
     for other, other_name in named:
         where = os.path.relpath(other, top)
@@ -249,7 +263,7 @@ def find(top) -> Package:
         else:
             kept[other_name] = other
             others.append(other)
-    return Package(name, folder, launch, '', others, notes)
+    return others
 
 
 def _scripts_beside(top, ours):
