@@ -429,8 +429,7 @@ def main():
     _quiet_qt_runtime_dir()
     # Imported here, after the platform is chosen.
     from PyQt5.QtCore import Qt, QTimer
-    from PyQt5.QtGui import QGuiApplication, QPainter
-    from PyQt5.QtWidgets import QApplication, QWidget
+    from PyQt5.QtWidgets import QApplication
     from .canvas import Canvas
 
     app = QApplication(argv)
@@ -445,22 +444,7 @@ def main():
     # Whoever ends it (a signal, the master for a node of the same name, any
     # caller of its XML-RPC shutdown) is told in the record, in rospy's words.
     rospy.core.add_preshutdown_hook(lambda reason: node.record('end', why=str(reason)))
-    headless = QGuiApplication.platformName() in ('offscreen', 'minimal')
-
-    window = None
-    if not headless:
-        class Window(QWidget):
-            def paintEvent(self, _event):
-                painter = QPainter(self)
-                painter.drawImage(0, 0, node.frame())
-                painter.end()
-        window = Window()
-        window.setWindowTitle('TurtleSim')
-        window.setFixedSize(500, 500)
-        window.show()
-    else:
-        rospy.loginfo('No display: running headless (Qt platform %s)',
-                      QGuiApplication.platformName())
+    window = _window(node)
 
     def on_tick():
         if signalled and not rospy.is_shutdown():
@@ -479,7 +463,32 @@ def main():
     app.lastWindowClosed.connect(lambda: rospy.signal_shutdown('window closed'))
     app.exec_()
     timer.stop()
+    _save_at_end(node)
 
+
+def _window(node):
+    """turtlesim's 500 x 500 window, showing the node's frames; None headless."""
+    from PyQt5.QtGui import QGuiApplication, QPainter
+    from PyQt5.QtWidgets import QWidget
+    if QGuiApplication.platformName() in ('offscreen', 'minimal'):
+        rospy.loginfo('No display: running headless (Qt platform %s)',
+                      QGuiApplication.platformName())
+        return None
+
+    class Window(QWidget):
+        def paintEvent(self, _event):
+            painter = QPainter(self)
+            painter.drawImage(0, 0, node.frame())
+            painter.end()
+    window = Window()
+    window.setWindowTitle('TurtleSim')
+    window.setFixedSize(500, 500)
+    window.show()
+    return window
+
+
+def _save_at_end(node):
+    """The picture saved at ~canvas_png, where that is set."""
     path = node.canvas_path()
     if path:
         problem = node.save(path)
