@@ -171,84 +171,9 @@ CONCLUSIONS = {
 def graded(tmp_path_factory):
     top = tmp_path_factory.mktemp('odd')
     cls, out = str(top / 'class'), str(top / 'out')
-    for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim', 'o8_unbuilt',
-                 'o11_prefixed', 'o12_windows', 'o14_included'):
-        shutil.copytree(LENA, os.path.join(cls, name))
-    nest(os.path.join(cls, 'o1_deep', 'lab1'), 1100)
-    os.mkfifo(os.path.join(cls, 'o3_fifo', 'lab1', 'scripts', 'pipe'))
-    shutil.copytree(os.path.join(cls, 'o4_twice', 'lab1'), os.path.join(cls, 'o4_twice',
-                                                                         'lab1 (copy)'))
-    package_xml = os.path.join(cls, 'o5_turtlesim', 'lab1', 'package.xml')
-    with open(package_xml) as f:
-        text = f.read().replace('<name>lab1</name>', '<name>turtlesim</name>')
-    with open(package_xml, 'w') as f:
-        f.write(text)
-    cmake = os.path.join(cls, 'o8_unbuilt', 'lab1', 'CMakeLists.txt')
-    with open(cmake) as f:      # a project named otherwise than its package: catkin refuses it
-        text = f.read().replace('project(lab1)', 'project(lab_one)')
-    with open(cmake, 'w') as f:
-        f.write(text)
-    cmake = os.path.join(cls, 'o14_included', 'lab1', 'CMakeLists.txt')
-    with open(cmake) as f:      # catkin_create_pkg made include/, which git never kept
-        text = f.read().replace('catkin_package()', 'catkin_package(INCLUDE_DIRS include)')
-    with open(cmake, 'w') as f:
-        f.write(text)
-    launch = os.path.join(cls, 'o11_prefixed', 'lab1', 'launch', 'start.launch')
-    with open(launch) as f:     # a window of its own, in a terminal no machine of ours has
-        text = f.read().replace('name="l_controller"/>',
-                                'name="l_controller" launch-prefix="terminator -x"/>')
-    with open(launch, 'w') as f:
-        f.write(text)
-    controller = os.path.join(cls, 'o12_windows', 'lab1', 'scripts', 'l_controller.py')
-    with open(controller, newline='') as f:
-        text = f.read()
-    with open(controller, 'w', newline='') as f:  # each line ending in CR LF
-        f.write(text.replace('\n', '\r\n'))
-    shutil.copytree(PRINTER, os.path.join(cls, 'h7_printer'))
-    shutil.copytree(NOAH, os.path.join(cls, 'o6_three'))
-    spin = os.path.join(cls, 'o6_three', 'noah_ws', 'src', 'lab_one', 'scripts', 'spin_forever.py')
-    with open(spin, 'w') as f:
-        f.write(SPIN)
-    os.chmod(spin, 0o755)
-    # o6's fight again, where its launch file starts turtlesim alone (a real class's
-    # started Gazebo): the alone run's line says so, not "no launch file"
-    shutil.copytree(os.path.join(cls, 'o6_three'), os.path.join(cls, 'o19_passed_over'))
-    launch = os.path.join(cls, 'o19_passed_over', 'noah_ws', 'src', 'lab_one', 'launch')
-    os.makedirs(launch)
-    with open(os.path.join(launch, 'turtle.launch'), 'w') as f:
-        f.write('<launch>\n  <node pkg="turtlesim" type="turtlesim_node" name="sim"/>\n'
-                '</launch>\n')
-    shutil.copytree(NOAH, os.path.join(cls, 'o10_turning'))
-    for name, text in (('n_controller.py', TURN), ('spin_forever.py', TURN), ('idle.py', IDLE)):
-        script = os.path.join(cls, 'o10_turning', 'noah_ws', 'src', 'lab_one', 'scripts', name)
-        with open(script, 'w') as f:
-            f.write(text)
-        os.chmod(script, 0o755)
-    shutil.copytree(LENA, os.path.join(cls, 'o7_siblings'))
-    for name, text in GAZEBO_WORLD.items():
-        os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
-        with open(os.path.join(cls, 'o7_siblings', 'gazebo_world', name), 'w') as f:
-            f.write(text)
-    for sid in ('o17_never_built', 'o18_no_launch'):
-        shutil.copytree(HANA, os.path.join(cls, sid))
-        cmake = os.path.join(cls, sid, 'hana_lab', 'CMakeLists.txt')
-        with open(cmake) as f:      # as catkin_create_pkg wrote them: commented out, never built
-            text = f.read().replace('add_executable', '# add_executable').replace(
-                'target_link_libraries', '# target_link_libraries')
-        with open(cmake, 'w') as f:
-            f.write(text)
-    shutil.rmtree(os.path.join(cls, 'o18_no_launch', 'hana_lab', 'launch'))
-    no_cmake = {name: text for name, text in BY_HAND.items() if name != 'CMakeLists.txt'}
-    for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS),
-                          ('o15_no_cmake/hw3', no_cmake), ('o16_latched/hw3', LATCHED),
-                          ('o20_turns/turns', TURNS)):
-        for name, text in files.items():
-            path = os.path.join(cls, folder, name)
-            os.makedirs(os.path.dirname(path), exist_ok=True)
-            with open(path, 'w') as f:
-                f.write(text)
-            os.chmod(path, 0o755 if name in ('scripts/asks.py', 'scripts/legs.sh',
-                                             'scripts/bars.sh') else 0o644)
+    _lenas_changed(cls)
+    _noahs_changed(cls)
+    _others(cls)
     lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13',
              'o14', 'o15', 'o16', 'o20')  # not o2
     (top / 'roster.csv').write_text(
@@ -263,6 +188,93 @@ def graded(tmp_path_factory):
             '--jobs', '2')) + (before,)
     finally:    # too deep for pytest's own clean-up
         subprocess.run(['rm', '-rf', os.path.join(cls, 'o1_deep')], check=True)
+
+
+def _replaced(path, old, new):
+    """The file at `path` with `old` replaced by `new`, its line endings kept."""
+    with open(path, newline='') as f:
+        text = f.read()
+    with open(path, 'w', newline='') as f:
+        f.write(text.replace(old, new))
+
+
+def _lenas_changed(cls):
+    """Lena's package, each copy changed one odd way, and a sibling beside one."""
+    for name in ('o1_deep', MULLER, 'o3_fifo', 'o4_twice', 'o5_turtlesim', 'o8_unbuilt',
+                 'o11_prefixed', 'o12_windows', 'o14_included', 'o7_siblings'):
+        shutil.copytree(LENA, os.path.join(cls, name))
+    nest(os.path.join(cls, 'o1_deep', 'lab1'), 1100)
+    os.mkfifo(os.path.join(cls, 'o3_fifo', 'lab1', 'scripts', 'pipe'))
+    shutil.copytree(os.path.join(cls, 'o4_twice', 'lab1'), os.path.join(cls, 'o4_twice',
+                                                                         'lab1 (copy)'))
+    _replaced(os.path.join(cls, 'o5_turtlesim', 'lab1', 'package.xml'),
+              '<name>lab1</name>', '<name>turtlesim</name>')
+    # a project named otherwise than its package: catkin refuses it
+    _replaced(os.path.join(cls, 'o8_unbuilt', 'lab1', 'CMakeLists.txt'),
+              'project(lab1)', 'project(lab_one)')
+    # catkin_create_pkg made include/, which git never kept
+    _replaced(os.path.join(cls, 'o14_included', 'lab1', 'CMakeLists.txt'),
+              'catkin_package()', 'catkin_package(INCLUDE_DIRS include)')
+    # a window of its own, in a terminal no machine of ours has
+    _replaced(os.path.join(cls, 'o11_prefixed', 'lab1', 'launch', 'start.launch'),
+              'name="l_controller"/>', 'name="l_controller" launch-prefix="terminator -x"/>')
+    # each line ending in CR LF
+    _replaced(os.path.join(cls, 'o12_windows', 'lab1', 'scripts', 'l_controller.py'),
+              '\n', '\r\n')
+    for name, text in GAZEBO_WORLD.items():
+        os.makedirs(os.path.join(cls, 'o7_siblings', 'gazebo_world'), exist_ok=True)
+        with open(os.path.join(cls, 'o7_siblings', 'gazebo_world', name), 'w') as f:
+            f.write(text)
+
+
+def _noahs_changed(cls):
+    """Noah's package (no launch file) with executables that fight or idle."""
+    shutil.copytree(NOAH, os.path.join(cls, 'o6_three'))
+    _written(os.path.join(cls, 'o6_three', 'noah_ws', 'src', 'lab_one', 'scripts'),
+             {'spin_forever.py': SPIN})
+    # o6's fight again, where its launch file starts turtlesim alone (a real class's
+    # started Gazebo): the alone run's line says so, not "no launch file"
+    shutil.copytree(os.path.join(cls, 'o6_three'), os.path.join(cls, 'o19_passed_over'))
+    launch = os.path.join(cls, 'o19_passed_over', 'noah_ws', 'src', 'lab_one', 'launch')
+    os.makedirs(launch)
+    with open(os.path.join(launch, 'turtle.launch'), 'w') as f:
+        f.write('<launch>\n  <node pkg="turtlesim" type="turtlesim_node" name="sim"/>\n'
+                '</launch>\n')
+    shutil.copytree(NOAH, os.path.join(cls, 'o10_turning'))
+    _written(os.path.join(cls, 'o10_turning', 'noah_ws', 'src', 'lab_one', 'scripts'),
+             {'n_controller.py': TURN, 'spin_forever.py': TURN, 'idle.py': IDLE})
+
+
+def _written(folder, scripts):
+    """Each of `scripts` (name: text) written in `folder`, executable."""
+    for name, text in scripts.items():
+        with open(os.path.join(folder, name), 'w') as f:
+            f.write(text)
+        os.chmod(os.path.join(folder, name), 0o755)
+
+
+def _others(cls):
+    """A hostile printer, Hana's C++ never built (one without its launch
+    folder), and packages written here: by hand, a prompt, latched lines."""
+    shutil.copytree(PRINTER, os.path.join(cls, 'h7_printer'))
+    for sid in ('o17_never_built', 'o18_no_launch'):
+        shutil.copytree(HANA, os.path.join(cls, sid))
+        # as catkin_create_pkg wrote them: commented out, never built
+        cmake = os.path.join(cls, sid, 'hana_lab', 'CMakeLists.txt')
+        _replaced(cmake, 'add_executable', '# add_executable')
+        _replaced(cmake, 'target_link_libraries', '# target_link_libraries')
+    shutil.rmtree(os.path.join(cls, 'o18_no_launch', 'hana_lab', 'launch'))
+    no_cmake = {name: text for name, text in BY_HAND.items() if name != 'CMakeLists.txt'}
+    for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS),
+                          ('o15_no_cmake/hw3', no_cmake), ('o16_latched/hw3', LATCHED),
+                          ('o20_turns/turns', TURNS)):
+        for name, text in files.items():
+            path = os.path.join(cls, folder, name)
+            os.makedirs(os.path.dirname(path), exist_ok=True)
+            with open(path, 'w') as f:
+                f.write(text)
+            os.chmod(path, 0o755 if name in ('scripts/asks.py', 'scripts/legs.sh',
+                                             'scripts/bars.sh') else 0o644)
 
 
 def rows_of(out):
