@@ -329,33 +329,14 @@ def clock_ratios(results):
     return [''] + lines if lines else []
 
 
+MODE_COLUMNS = [('latency_ms', 12, '.1f'), ('drawing_s', 11, '.2f'), ('vertex_max_mm', 11, '.3f'),
+                ('path_max_mm', 9, '.2f'), ('final_mm', 10, '.3f'),
+                ('controller_cpu_pct', 11, '.2f'), ('cmd_vel_per_s', 11, '.1f'),
+                ('sim_rate_hz', 8, '.2f'), ('sim_cpu_pct', 11, '.1f')]
+
+
 def table(results, sim):
-    lines = []
-    header = (f"{'mode':11}{'load':8}{'latency ms':>12}{'drawing s':>11}{'vertex mm':>11}"
-              f"{'path mm':>9}{'final mm':>10}{'ctl CPU %':>11}{'cmd_vel/s':>11}"
-              f"{'sim Hz':>8}{'sim CPU %':>11}")
-    lines.append(header)
-    lines.append('-' * len(header))
-    for group in results['groups']:
-        mode, load, s = group['mode'], group['load'], group['summary']
-        for stat in ('median', 'worst'):
-            cells = []
-            for key, width, fmt in [('latency_ms', 12, '.1f'), ('drawing_s', 11, '.2f'),
-                                    ('vertex_max_mm', 11, '.3f'), ('path_max_mm', 9, '.2f'),
-                                    ('final_mm', 10, '.3f'), ('controller_cpu_pct', 11, '.2f'),
-                                    ('cmd_vel_per_s', 11, '.1f'), ('sim_rate_hz', 8, '.2f'),
-                                    ('sim_cpu_pct', 11, '.1f')]:
-                value = s[key][stat]
-                limit = limit_for(key, mode, load)
-                bad = limit is not None and value > limit
-                if key == 'drawing_s' and load == 'idle' and mode == 'timed':
-                    bad = abs(value - LAB_DRAWING_S) > 0.5
-                if key == 'sim_rate_hz' and load == 'idle':
-                    bad = abs(value - SIM_RATE_HZ) > SIM_RATE_HZ * 0.01
-                text = format(value, fmt) + ('!' if bad else ' ')
-                cells.append(text.rjust(width))
-            label = f'{mode:11}{load:8}' if stat == 'median' else f"{'  worst':19}"
-            lines.append(label + ''.join(cells))
+    lines = _mode_rows(results['groups'])
     lines.extend(clock_ratios(results))
     lines.extend(word_lines(results))
     lines.extend(classroom_lines(results))
@@ -363,19 +344,8 @@ def table(results, sim):
     lines.extend(recognition_lines(results))
     lines.extend(viewer_lines(results))
     lines.extend(latency_lines(results))
-    sim_f = results['simulator_figures']
-    idle, ten = sim_f['idle'], sim_f['ten_moving']
-
-    def mark(value, ok):
-        return value + ('' if ok else '!')
     lines.append('')
-    lines.append(
-        f"simulator ({sim}): idle "
-        f"{mark(format(idle['rate_hz'], '.2f'), abs(idle['rate_hz'] - SIM_RATE_HZ) <= SIM_RATE_HZ * 0.01)} Hz, "
-        f"{mark(format(idle['cpu_pct'], '.1f'), idle['cpu_pct'] <= 3.0)}% CPU, "
-        f"{mark(format(idle['rss_mb'], '.0f'), idle['rss_mb'] <= 80)} MB; ten moving turtles "
-        f"{mark(format(ten['cpu_pct'], '.1f'), ten['cpu_pct'] <= 10.0)}% CPU, "
-        f"{mark(format(ten['rss_mb'], '.0f'), ten['rss_mb'] <= 80)} MB")
+    lines.append(_simulator_line(results['simulator_figures'], sim))
     lines.append('Each group: median row, then worst over the repetitions. "!" marks a figure '
                  'outside its target.')
     lines.append('timed-wall is the lab\'s own timing, shown for comparison: it has no targets.')
@@ -387,6 +357,44 @@ def table(results, sim):
                  'simulator 62.5 Hz +-1% and <= 3% CPU idle, <= 10% CPU with ten moving turtles, '
                  '<= 80 MB.')
     return '\n'.join(lines)
+
+
+def _mode_rows(groups):
+    """The header, and each mode's median and worst row, "!" past a target."""
+    header = (f"{'mode':11}{'load':8}{'latency ms':>12}{'drawing s':>11}{'vertex mm':>11}"
+              f"{'path mm':>9}{'final mm':>10}{'ctl CPU %':>11}{'cmd_vel/s':>11}"
+              f"{'sim Hz':>8}{'sim CPU %':>11}")
+    lines = [header, '-' * len(header)]
+    for group in groups:
+        mode, load, s = group['mode'], group['load'], group['summary']
+        for stat in ('median', 'worst'):
+            cells = []
+            for key, width, fmt in MODE_COLUMNS:
+                value = s[key][stat]
+                limit = limit_for(key, mode, load)
+                bad = limit is not None and value > limit
+                if key == 'drawing_s' and load == 'idle' and mode == 'timed':
+                    bad = abs(value - LAB_DRAWING_S) > 0.5
+                if key == 'sim_rate_hz' and load == 'idle':
+                    bad = abs(value - SIM_RATE_HZ) > SIM_RATE_HZ * 0.01
+                cells.append((format(value, fmt) + ('!' if bad else ' ')).rjust(width))
+            label = f'{mode:11}{load:8}' if stat == 'median' else f"{'  worst':19}"
+            lines.append(label + ''.join(cells))
+    return lines
+
+
+def _simulator_line(figures, sim):
+    """The simulator idle and with ten turtles moving, "!" past a target."""
+    idle, ten = figures['idle'], figures['ten_moving']
+
+    def mark(value, ok):
+        return value + ('' if ok else '!')
+    rate_ok = abs(idle['rate_hz'] - SIM_RATE_HZ) <= SIM_RATE_HZ * 0.01
+    return (f"simulator ({sim}): idle {mark(format(idle['rate_hz'], '.2f'), rate_ok)} Hz, "
+            f"{mark(format(idle['cpu_pct'], '.1f'), idle['cpu_pct'] <= 3.0)}% CPU, "
+            f"{mark(format(idle['rss_mb'], '.0f'), idle['rss_mb'] <= 80)} MB; ten moving turtles "
+            f"{mark(format(ten['cpu_pct'], '.1f'), ten['cpu_pct'] <= 10.0)}% CPU, "
+            f"{mark(format(ten['rss_mb'], '.0f'), ten['rss_mb'] <= 80)} MB")
 
 
 def main():

@@ -20,6 +20,7 @@ from std_srvs.srv import Empty
 
 from support.accuracy import expected, vertex_errors
 from support.nodes import PoseRecorder, connections, subscribed, wait_until
+from turtle_letters.classroom.names import spare_name
 from turtle_letters.grading.procstat import cpu_seconds
 from turtle_letters.letters.font import BUILTIN
 from turtle_letters.letters.layout import Layout
@@ -74,15 +75,7 @@ def classroom_run(processes, sim_pid, turtles):
                                  f'_out:={grades}')
     controllers.append(scoreboard)
     try:
-        for name in names:
-            wait_until(lambda: subscribed('/scoreboard', f'/{name}/pose'), 60,
-                       f'the scoreboard watching {name}')
-        recorders = [PoseRecorder(turtle=name) for name in names]
-        chatters = [rospy.Publisher(f'/{name}/chatter', String, queue_size=1) for name in names]
-        for chatter, recorder in zip(chatters, recorders):
-            wait_until(lambda: chatter.get_num_connections() > 0, 60, 'a controller on chatter')
-            recorder.wait_connected()
-            wait_until(lambda: recorder.poses, 10, 'a pose of each turtle')
+        recorders, chatters = _connected(names)
         time.sleep(1.0)     # the controllers' start-up ends before the clock starts
         starts = [r.last() for r in recorders]
         for r in recorders:
@@ -100,12 +93,10 @@ def classroom_run(processes, sim_pid, turtles):
         scoreboard_cpu = controller_cpu.pop()
         with recorders[0].lock:
             stamps = [t for t, _ in recorders[0].poses]
-        errors = []
-        for start, recorder in zip(starts, recorders):
-            pose = PlannedPose(start.x, start.y, start.theta)
-            strokes, _ = expected('N', [(start.x, start.y)], pose, SIZE, BUILTIN, 'ccw')
-            path = [(start.x, start.y)] + recorder.path()
-            errors.append(max(vertex_errors(path, [v for s in strokes for v in s])) * 1000)
+        errors = [_worst_vertex_mm(
+            expected('N', [(start.x, start.y)], PlannedPose(start.x, start.y, start.theta),
+                     SIZE, BUILTIN, 'ccw')[0], start, recorder)
+            for start, recorder in zip(starts, recorders)]
         drawing = [s[1] - s[0] for s in map(_moving_span, recorders)]
         for chatter in chatters:
             chatter.unregister()
@@ -120,6 +111,21 @@ def classroom_run(processes, sim_pid, turtles):
             'bench_cpu_pct': 100 * (time.process_time() - bench_cpu0) / span,
             'scoreboard_cpu_per_turtle_pct': scoreboard_cpu / turtles,
             'graded_pass': sum(r['verdict'] == 'pass' for r in _grades(grades).values())}
+
+
+def _connected(names):
+    """(a pose recorder, a chatter publisher) of each student's turtle, once
+    the scoreboard watches each, its controller listens and a pose came."""
+    for name in names:
+        wait_until(lambda: subscribed('/scoreboard', f'/{name}/pose'), 60,
+                   f'the scoreboard watching {name}')
+    recorders = [PoseRecorder(turtle=name) for name in names]
+    chatters = [rospy.Publisher(f'/{name}/chatter', String, queue_size=1) for name in names]
+    for chatter, recorder in zip(chatters, recorders):
+        wait_until(lambda: chatter.get_num_connections() > 0, 60, 'a controller on chatter')
+        recorder.wait_connected()
+        wait_until(lambda: recorder.poses, 10, 'a pose of each turtle')
+    return recorders, chatters
 
 
 def _grades(folder):
@@ -140,7 +146,7 @@ def parallel_word_run(processes):
     """PARALLEL_WORD with parallel:=true, then its slowest letter alone."""
     _fresh_canvas()
     speeds = (f'_size:={SIZE}', f'_angular_speed:={WORD_ANGULAR_SPEED}')
-    turtles = ['turtle1'] + [f'turtle1_{i}' for i in range(2, len(PARALLEL_WORD) + 1)]
+    turtles = ['turtle1'] + [spare_name('turtle1', i) for i in range(2, len(PARALLEL_WORD) + 1)]
     recorders = [PoseRecorder(turtle=t) for t in turtles]
     recorders[0].wait_connected()
     wait_until(lambda: recorders[0].poses, 10, 'a pose of turtle1')
@@ -164,15 +170,24 @@ def parallel_word_run(processes):
         processes.stop(controller)
     spans = [_moving_span(r) for r in recorders]
     word_s = max(s[1] for s in spans) - min(s[0] for s in spans)
-    errors = []
-    for char, place, begin, recorder in zip(PARALLEL_WORD, places, starts, recorders):
-        strokes, _ = expected(char, [place], begin, SIZE)
-        path = [(begin.x, begin.y)] + recorder.path()
-        errors.append(max(vertex_errors(path, [v for s in strokes for v in s])) * 1000)
+    errors = [_worst_vertex_mm(expected(char, [place], begin, SIZE)[0], begin, recorder)
+              for char, place, begin, recorder in zip(PARALLEL_WORD, places, starts, recorders)]
     for recorder in recorders:
         recorder.unregister()
+    slowest, alone_s = _slowest_alone(processes, places, starts, speeds)
+    return {'word': PARALLEL_WORD, 'word_s': word_s, 'slowest_letter': PARALLEL_WORD[slowest],
+            'slowest_alone_s': alone_s, 'vertex_max_mm': max(errors)}
 
-    # The slowest letter by the plan, drawn alone from the same place.
+
+def _worst_vertex_mm(strokes, start, recorder):
+    """How far, mm, the recorded path's corners lie from `strokes`' at worst."""
+    path = [(start.x, start.y)] + recorder.path()
+    return max(vertex_errors(path, [v for s in strokes for v in s])) * 1000
+
+
+def _slowest_alone(processes, places, starts, speeds):
+    """(the index of the word's slowest letter by the plan, the s it takes
+    drawn alone from the same place)."""
     slowest = max(range(len(PARALLEL_WORD)),
                   key=lambda i: _letter_seconds(PARALLEL_WORD[i], places[i], starts[i]))
     _fresh_canvas()
@@ -195,8 +210,7 @@ def parallel_word_run(processes):
         processes.stop(solo)
     alone = _moving_span(recorder)
     recorder.unregister()
-    return {'word': PARALLEL_WORD, 'word_s': word_s, 'slowest_letter': PARALLEL_WORD[slowest],
-            'slowest_alone_s': alone[1] - alone[0], 'vertex_max_mm': max(errors)}
+    return slowest, alone[1] - alone[0]
 
 
 def classroom_lines(results):
