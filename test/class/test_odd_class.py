@@ -324,6 +324,17 @@ def test_a_script_stopped_at_a_latched_rostopic_pub_says_where_and_what_to_type(
         f'the turtle never moved after the trigger: {why}', said
 
 
+def test_a_script_tried_alone_and_not_kept_is_said_and_logged(graded):
+    """o20's bars.sh, tried alone first (in name order), waits for a move
+    that never comes and draws nothing; legs.sh alone draws the L, and is
+    kept: the row says what bars.sh drew, and its log holds bars.sh's run."""
+    reason = rows_of(graded[0])['o20_turns']['reason']
+    assert 'then legs.sh alone in a fresh world' in reason, reason
+    assert '; also tried, not kept: bars.sh alone drew no letter (' in reason, reason
+    log = open(os.path.join(graded[0], 'o20_turns', 'log.txt')).read()
+    assert '==== bars.sh alone, not kept: roslaunch ' in log, log[-3000:]
+
+
 def test_a_prompt_that_asks_for_the_letter_is_typed_it_and_the_row_says_so(graded):
     """o13 asks at a prompt which letter to draw: P earns nothing there, so
     the roster's L is typed, and it is drawn; only `talker` is lost for it."""

@@ -5,8 +5,9 @@
     grade_class.py --gradescope           (/autograder/submission to results/results.json)
     grade_class.py --reread OUT           (the drawings kept in OUT read again: no code run)
 
-Here: the arguments, the pool (N students at a time, each in a slot of
-its own: a user, a core), the progress, the signals and the class's files.
+Here: the arguments, the pool (N students at a time, the likely longest
+first, each in a slot of its own: a user, a core), the progress, the
+signals and the class's files.
 How one student becomes their row is driver.py's, stage by stage. The
 grader's own failure on one submission is that student's row, never the
 class's. Exit 0 once every student has a
@@ -195,8 +196,10 @@ class Progress:
 
 
 def grade_all(students, rubric, out, hidden, args, warnings=None):
-    """(every student's row in roster order, `args.jobs` at a time; the
-    signal's name if Ctrl-C or SIGTERM stopped it, with only the rows done)."""
+    """(every student's row in roster order, `args.jobs` at a time, the
+    likely longest first (grading_order); the signal's name if Ctrl-C or
+    SIGTERM stopped it, with only the rows done). Each row is printed as
+    it is done."""
     warnings = warnings or {}
     place = Place(hidden, args.isolated, args.jobs, session.caps(rubric.limits))
     ready_to_paint()
@@ -204,14 +207,19 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     before = _on_signal(_first_stop(place, asked))     # before any student starts
     pool = concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs)
     try:
-        futures = [pool.submit(driver.grade, student, rubric, out, place,
-                               warnings.get(student.id, '')) for student in students]
-        for i, future in enumerate(futures):
-            if not _done_unless_asked(future, asked):
-                break
-            rows[i] = _finished(future.result(), progress, args.isolated)
-            # each row kept as it comes: a grader killed outright keeps what it graded
-            reports.write_csv(os.path.join(out, 'grades.csv'), [rows[j] for j in sorted(rows)])
+        futures = {pool.submit(driver.grade, students[i], rubric, out, place,
+                               warnings.get(students[i].id, '')): i
+                   for i in grading_order(students)}
+        waiting = set(futures)
+        while waiting and not asked:
+            done, waiting = concurrent.futures.wait(
+                waiting, timeout=0.2, return_when=concurrent.futures.FIRST_COMPLETED)
+            for future in done:
+                if isinstance(future.exception(), driver.Stopped):    # a stop just asked
+                    continue
+                rows[futures[future]] = _finished(future.result(), progress, args.isolated)
+                # each row kept as it comes: a grader killed outright keeps what it graded
+                reports.write_csv(os.path.join(out, 'grades.csv'), [rows[j] for j in sorted(rows)])
         if asked:
             print(f'\ngrade_class.py: {asked[0]}: stopping (again to force)', file=sys.stderr,
                   flush=True)
@@ -222,7 +230,7 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
         place.stopping.set()
         pool.shutdown(wait=True)
         _on_signal(*before)
-    for i, future in enumerate(futures):    # done while it stopped: they count
+    for future, i in futures.items():    # done while it stopped: they count
         if i not in rows and future.done() and not future.cancelled() and \
                 future.exception() is None:
             rows[i] = _finished(future.result(), progress, args.isolated)
@@ -230,12 +238,15 @@ def grade_all(students, rubric, out, hidden, args, warnings=None):
     return [rows[i] for i in sorted(rows)], (asked[0] if asked else '')
 
 
-def _done_unless_asked(future, asked):
-    """True once `future` is done; False as soon as a stop is asked."""
-    while not asked:
-        if concurrent.futures.wait([future], timeout=0.2).done:
-            return True
-    return False
+def grading_order(students):
+    """The roster's places in the order they are graded: first those whose
+    row is likely long (driver.likely_long: several scripts started
+    together, then each alone), then the rest, each part in roster order,
+    so that no long row is left for the end, the other jobs idle beside it.
+    Which rows run longest is known only as they run: a drawing that never
+    ends, or one slow to draw, may still come last."""
+    long = [driver.likely_long(student) for student in students]
+    return sorted(range(len(students)), key=lambda i: not long[i])
 
 
 def _finished(graded, progress, isolated):

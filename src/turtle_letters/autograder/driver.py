@@ -60,6 +60,19 @@ def grade(student: Student, rubric, out, place, warning=''):
                            rubrics.grade(facts, rubric), 0.0, [], None), facts
 
 
+def likely_long(student: Student):
+    """Whether the student's row is likely among a class's longest: their
+    package starts several scripts together, each of which may run again
+    alone (submission.started_together). Read from their files before any
+    run; a folder the grader cannot read so is not (its row says why)."""
+    if student.folder is None:
+        return False
+    try:
+        return submission.started_together(submission.find(student.folder))
+    except Exception:       # whatever it is, _facts_or_failure meets it and says so
+        return False
+
+
 def _log(run, facts, notes, error):
     """log.txt's sections: (title, text)."""
     sections = list(run.log) if run else [('submission', facts.problem)]
@@ -144,14 +157,15 @@ def each_alone(expected, rubric, box, facts, run):
     """A TA's try: executables started together (no launch file) that did
     not draw the letters run each alone in a fresh world, in a TA's order
     (session.drivers_first), limits.alone of them at most, until one draws
-    them; the best (facts, run) kept. Not where one of them alone acted on the
+    them; the best (facts, run) kept, its launch step and log saying what
+    the others drew (_not_kept). Not where one of them alone acted on the
     turtles: alone, it draws the same. The alone runs share one drawing's
     limit, each watched for what is left of it: a package whose nodes never
     stop costs the class two limits, not one for each node."""
     first, best = run, rubrics.grade(facts, rubric).score
     fought = len(first.executables) > 1 and not seen.one_driver(first.record)
     names = session.drivers_first(first, box)[:rubric.limits.alone] if fought else []
-    left = rubric.limits.drawing
+    left, tries = rubric.limits.drawing, []
     for i, name in enumerate(names):
         if box.stopped or len(rubrics.credited(facts)) == len(expected):
             break
@@ -162,8 +176,28 @@ def each_alone(expected, rubric, box, facts, run):
         left -= tried.watched_for()
         tried_facts = observed(expected, tried, rubric)
         score = rubrics.grade(tried_facts, rubric).score
+        tries.append((name, rubrics.drawn_text(tried_facts), score, tried))
         if score > best:
             facts, run, best = tried_facts, tried, score
+    return _not_kept(facts, run, tries, len(first.log))
+
+
+def _not_kept(facts, run, tries, shared):
+    """(facts, run) kept of each_alone's `tries` (name, drawn, score, run),
+    with what each other one drew said in its launch step, and its own log
+    sections (those after the first `shared`, the run together's) in the
+    kept run's log: a TA sees every try, not only the best."""
+    others = [(name, drawn, score, tried) for name, drawn, score, tried in tries
+              if tried is not run]
+    if not others or facts.launch is None:
+        return facts, run
+    said = ', '.join(f'{name} alone drew {drawn or "no letter"} ({score:g} points)'
+                     for name, drawn, score, _ in others)
+    facts = facts._replace(launch=facts.launch._replace(
+        says=f'{facts.launch.says}; also tried, not kept: {said}'))
+    for name, _, _, tried in others:
+        run.log += [(f'{name} alone, not kept: {title}', text)
+                    for title, text in tried.log[shared:]]
     return facts, run
 
 

@@ -400,6 +400,21 @@ def made_executable(folder, depth=3):
     return sorted(made)
 
 
+def started_together(package: Package, depth=3):
+    """Whether the grader will start several of the package's scripts
+    together, as it does where no launch file starts a node of its own:
+    then each may be run again alone (driver.each_alone), and the row is
+    among a class's longest. Read from the files as handed in, before
+    any build, as the copy will hold them (its executable files and the
+    scripts made so): a C++ program, built later, is not counted."""
+    if package.problem or (package.launch and started_packages(package)[1]):
+        return False
+    files = _plain_files(package.folder, depth, lambda found: False, package.left)
+    modules = _modules(files)
+    return len({entry.name for entry in files
+                if os.access(entry.path, os.X_OK) or _script(entry, modules)}) > 1
+
+
 def _runnable(folder, depth=3, skipped=()):
     """Whether `folder` holds a script a TA could run (_script), its
     folders `skipped` aside."""

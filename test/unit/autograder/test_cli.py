@@ -118,6 +118,26 @@ def test_each_row_is_written_as_it_is_graded(tmp_path, monkeypatch):
     assert (tmp_path / 'out' / 'grades.csv').read_text().count('\n') == 3
 
 
+def test_the_students_likely_longest_are_graded_first_each_part_in_roster_order(tmp_path):
+    """Who starts several scripts together (run again each alone: a class's
+    longest rows) goes first, so that such a row is not left for the end
+    while the other jobs stand idle; a folder that cannot be read so, or
+    none, keeps its place among the rest."""
+    def package(name, scripts):
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / 'package.xml').write_text(f'<package format="2"><name>{name}</name></package>')
+        for script in scripts:
+            (folder / script).write_text('#!/bin/bash\nrosservice call /clear\n')
+        return str(folder)
+    students = [Student('a1', 'Ann', 'A', package('ann', ['a.sh'])),
+                Student('b2', 'Bob', 'B', package('bob', ['b.sh', 'b2.sh'])),
+                Student('c3', 'Cy', 'C', None),
+                Student('d4', 'Di', 'D', str(tmp_path / 'gone')),
+                Student('e5', 'Ed', 'E', package('ed', ['e.sh', 'e2.sh', 'e3.sh']))]
+    assert cli.grading_order(students) == [1, 4, 0, 2, 3]
+
+
 def test_the_class_files_keep_roster_order_when_a_later_student_finished_first():
     """Two at a time, the third student may finish before the second, who
     is then stopped: the second's 'not graded' row stays in its place."""

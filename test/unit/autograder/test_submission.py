@@ -95,6 +95,31 @@ def test_a_launch_file_of_no_node_of_its_own_is_passed_over_in_plain_words(tmp_p
         'launch/turtle.launch starts nodes of turtlesim only, none of hw'
 
 
+def test_several_scripts_started_together_are_told_from_the_files_handed_in(tmp_path):
+    """The rows a class grades first (cli.grading_order): the grader will
+    start several scripts together, here a course's two shell scripts,
+    handed in without the execute bit, beside a launch file of turtlesim
+    alone; not one script, nor a launch file that starts its own node."""
+    sim = '<launch><node pkg="turtlesim" type="turtlesim_node" name="s"/></launch>'
+    make(tmp_path, {'two/package.xml': PACKAGE.format('two'), 'two/launch/t.launch': sim,
+                    'two/scripts/first.sh': 'rosservice call /clear\n',
+                    'two/scripts/second.sh': 'rosservice call /clear\n'})
+    make(tmp_path, {'one/package.xml': PACKAGE.format('one'), 'one/launch/t.launch': sim,
+                    'one/scripts/only.sh': 'rosservice call /clear\n'})
+    make(tmp_path, {'my_lab/package.xml': PACKAGE.format('my_lab'),
+                    'my_lab/launch/lab.launch': LAB,
+                    'my_lab/scripts/controller.py': '#!/usr/bin/env python3\n',
+                    'my_lab/scripts/talker.py': '#!/usr/bin/env python3\n'})
+    node = 'import rospy\nimport shapes\nrospy.init_node("n")\n'
+    make(tmp_path, {'bare/package.xml': PACKAGE.format('bare'), 'bare/src/draw.py': node,
+                    'bare/src/shapes.py': 'import rospy\n'})
+    told = {name: submission.started_together(find(str(tmp_path / name)))
+            for name in ('two', 'one', 'my_lab', 'bare')}
+    assert told == {'two': True, 'one': False, 'my_lab': False, 'bare': False}
+    make(tmp_path, {'bare/src/write.py': node})     # a second node: no launch file starts either
+    assert submission.started_together(find(str(tmp_path / 'bare')))
+
+
 def test_no_package_no_name_no_launch_file(tmp_path):
     assert find(str(tmp_path)).problem == f'no package.xml in {tmp_path}'
     make(tmp_path, {'a/package.xml': '<package format="2"></package>'})
