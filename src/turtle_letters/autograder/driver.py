@@ -187,8 +187,7 @@ def _not_kept(facts, run, tries, shared):
     with what each other one drew said in its launch step, and its own log
     sections (those after the first `shared`, the run together's) in the
     kept run's log: a TA sees every try, not only the best."""
-    others = [(name, drawn, score, tried) for name, drawn, score, tried in tries
-              if tried is not run]
+    others = [one_try for one_try in tries if one_try[3] is not run]
     if not others or facts.launch is None:
         return facts, run
     said = ', '.join(f'{name} alone drew {drawn or "no letter"} ({score:g} points)'
