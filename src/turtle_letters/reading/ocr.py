@@ -58,6 +58,8 @@ class OcrReading(NamedTuple):
     votes: tuple = ()       # ((text, readings of it), ...): where the readings voted (_voted)
     rival: object = None    # an OcrReading of the ink that leaves this one in doubt (_rival)
     unheld: tuple = ()      # (px, OcrReading) of each other height it does not hold at (_held)
+    letters: float = 0.0    # its confidence in the least sure letter, where the text is
+                            # the one expected or the word's confidence is 0 (else 0)
 
 
 def picture(ink, filled=False):
@@ -118,7 +120,8 @@ def _read_picture(ink, expected, needed=CONFIDENT):
 
 def _pictures(ink, expected):
     """(text, confidence, the least sure letter's confidence where the text
-    is `expected`, else 0) of each reading of the picture of `ink`, in turn:
+    is `expected` or the word's confidence is 0, else 0) of each reading of
+    the picture of `ink`, in turn:
     read as a word, then as a line of letters or one letter, then (ink with
     contours) filled, the same two ways. (Each reads some drawings the
     others miss: a real class's ZA, the Z's foot run into the A, read as a
@@ -134,8 +137,10 @@ def _pictures(ink, expected):
             api = _api(mode)
             api.SetImage(image)
             text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
-            yield (text, float(api.MeanTextConf()) if text else 0.0,
-                   _least_sure(api) if text and text == expected else 0.0)
+            confidence = float(api.MeanTextConf()) if text else 0.0
+            yield (text, confidence,
+                   _least_sure(api) if text and (text == expected or not round(confidence))
+                   else 0.0)
 
 
 def _least_sure(api):
@@ -234,13 +239,14 @@ def _read_text(ink, expected):
 def _read_view(ink, view, expected):
     """Each reading of `ink` (thinned) seen at `view` (_views' degrees turned
     back by about a centre, and share of its width), as (OcrReading,
-    _pictures' least sure letter)."""
+    _pictures' least sure letter where it reads `expected`, else 0)."""
     tilt, width, centre = view
     upright = turned(ink, -tilt, centre) if tilt else ink
     if width != 1.0:
         upright = [[(px * width, py) for px, py in line] for line in upright]
-    for text, confidence, sure in _pictures(upright, expected):
-        yield OcrReading(text, confidence, float(tilt), width), sure
+    for text, confidence, letters in _pictures(upright, expected):
+        yield OcrReading(text, confidence, float(tilt), width, letters=letters), \
+            letters if text == expected else 0.0
 
 
 def _rivalled(reading, seen, ink, views):
@@ -513,5 +519,17 @@ def said(reading: OcrReading) -> str:
         others = ', and '.join(f'{px} px high it reads {said(r)[len("OCR reads "):]}'
                                for px, r in reading.unheld)
         objected += f', but drawn {others}: it holds at one size only'
-    return f'OCR reads {reading.text} ({reading.confidence:.0f}% sure{tilted}{narrowed}){objected}'
+    return f'OCR reads {reading.text} ({_sure(reading)}{tilted}{narrowed}){objected}'
+
+
+def _sure(reading):
+    """How sure Tesseract is of `reading`: its confidence in the word, and
+    where that is 0, in its least sure letter too. (Tesseract gives some
+    words it reads 0 whatever it makes of their letters: a real class's
+    small m, read M, 0% as a word and 80% as a letter; the row said only
+    `OCR reads M (0% sure)`.)"""
+    if round(reading.confidence) or not round(reading.letters):
+        return f'{reading.confidence:.0f}% sure'
+    letter = 'its letter' if len(reading.text) == 1 else 'its least sure letter'
+    return f'0% sure of it as a word, {reading.letters:.0f}% of {letter}'
 

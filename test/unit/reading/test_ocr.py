@@ -476,3 +476,17 @@ def test_a_reading_that_holds_at_one_size_of_the_picture_only_is_not_credited():
     assert [px for px, again in reading.unheld if again.text != 'IG'] == [48, 80]
     assert not supports(reading, 'IG')
     assert '48 px high it reads' in said(reading) and 'one size only' in said(reading)
+
+
+def test_a_letter_read_as_a_word_tesseract_gives_no_confidence_says_how_sure_of_the_letter():
+    """Hershey's roman simplex X alone, graded as XI: Tesseract reads it
+    X, 0% sure of it as a word (a quirk of its word confidence: a real
+    class's small m read M so) and 80% sure or more of the letter. The
+    row says both, where it said only `OCR reads X (0% sure)`."""
+    from turtle_letters.letters.hershey import load_font
+    ink = as_the_benchmark_draws(load_font('futural').glyph('X').strokes, 3.0, 0.0, 0.03)
+    reading = read_text(ink, 'XI')
+    assert reading.text == 'X' and round(reading.confidence) == 0, reading
+    assert reading.letters >= CONFIDENT and not supports(reading, 'XI'), reading
+    assert said(reading) == \
+        f'OCR reads X (0% sure of it as a word, {reading.letters:.0f}% of its letter)'
