@@ -139,8 +139,14 @@ def _pictures(ink, expected):
             text = ''.join(c for c in api.GetUTF8Text() if c in string.ascii_uppercase)
             confidence = float(api.MeanTextConf()) if text else 0.0
             yield (text, confidence,
-                   _least_sure(api) if text and (text == expected or not round(confidence))
+                   _least_sure(api) if text and (text == expected or _no_word_confidence(confidence))
                    else 0.0)
+
+
+def _no_word_confidence(confidence):
+    """Whether Tesseract gave the word it read no confidence (0%, as a row says
+    it): then its least sure letter's is taken too (_pictures), and said (_sure)."""
+    return not round(confidence)
 
 
 def _least_sure(api):
@@ -528,7 +534,7 @@ def _sure(reading):
     words it reads 0 whatever it makes of their letters: a real class's
     small m, read M, 0% as a word and 80% as a letter; the row said only
     `OCR reads M (0% sure)`.)"""
-    if round(reading.confidence) or not round(reading.letters):
+    if not _no_word_confidence(reading.confidence) or not round(reading.letters):
         return f'{reading.confidence:.0f}% sure'
     letter = 'its letter' if len(reading.text) == 1 else 'its least sure letter'
     return f'0% sure of it as a word, {reading.letters:.0f}% of {letter}'
