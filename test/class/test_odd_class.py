@@ -19,7 +19,10 @@ real class's was: run unbuilt), and one whose script stops at its first
 and a C++ package whose CMakeLists.txt builds none of its nodes (its
 add_executable lines commented out, as catkin_create_pkg writes them),
 with its launch file and without, and two scripts of `rostopic pub -1`
-lines that take turns on turtle1, never at once. Each costs its own row only, says why in words, and the grader's own
+lines that take turns on turtle1, never at once, and a repository of a
+course's projects: a Gazebo package whose launch file starts its own
+node, beside the letter's package, with no launch file, whose script
+pauses 8 s between strokes. Each costs its own row only, says why in words, and the grader's own
 memory stays bounded. Root only, as grading is."""
 import csv
 import json
@@ -113,6 +116,32 @@ TURNS = {'package.xml': BY_HAND['package.xml'].replace('hw3', 'turns'),
                             'sleep 3\n' + PUB.format(2.0, 0.0),
          'scripts/bars.sh': '#!/bin/bash\nrostopic echo -n 1 /turtle1/cmd_vel > /dev/null\n' +
                             'sleep 3\n' + PUB.format(0.0, 0.8) + 'sleep 3\n' + PUB.format(0.0, 0.8)}
+# A real repository's projects, as ASU's was: a Gazebo package whose launch file
+# starts its own node (not turtlesim's), and the letter's package, no launch file,
+# its script mode 644, `#!/usr/bin/env python`, pausing 8 s (more than `settle`)
+# between an L's strokes, as that script paused 9.
+L_DRAW = ('#!/usr/bin/env python\n'
+          'import rospy\n'
+          'from geometry_msgs.msg import Twist\n'
+          "rospy.init_node('l_draw')\n"
+          "cmd = rospy.Publisher('/turtle1/cmd_vel', Twist, queue_size=1)\n"
+          'rospy.sleep(2)\n'
+          'for x, z, pause in ((0.0, -1.5708, 1.5), (2.5, 0.0, 9.5), (0.0, 1.5708, 1.5), '
+          '(1.5, 0.0, 1.5)):\n'
+          '    move = Twist()\n'
+          '    move.linear.x, move.angular.z = x, z\n'
+          '    cmd.publish(move)\n'
+          '    rospy.sleep(pause)\n')
+PROJECTS = {'gazebo_chase/package.xml': BY_HAND['package.xml'].replace('hw3', 'gazebo_chase'),
+            'gazebo_chase/CMakeLists.txt': BY_HAND['CMakeLists.txt'].replace('hw3',
+                                                                             'gazebo_chase'),
+            'gazebo_chase/launch/chase.launch': '<launch><node pkg="gazebo_chase" '
+                                                'type="chase.py" name="chase"/></launch>\n',
+            'gazebo_chase/scripts/chase.py': IDLE.replace('turtle1/cmd_vel', 'tb3_1/cmd_vel'),
+            'nodes/package.xml': BY_HAND['package.xml'].replace('hw3', 'turtle_description'),
+            'nodes/CMakeLists.txt': BY_HAND['CMakeLists.txt'].replace('hw3',
+                                                                      'turtle_description'),
+            'nodes/l_draw.py': L_DRAW}
 PRINTER = os.path.join(HERE, 'hostile', 'h7_printer')
 RUBRIC = os.path.join(HERE, 'rubric.yaml')
 NOAHS = ('o6_three', 'o10_turning', 'o19_passed_over')     # Noah's package, changed
@@ -142,6 +171,8 @@ CONCLUSIONS = {
     'o8_unbuilt': ('L', 'pass', "does not match current PROJECT_NAME 'lab_one'"),
     'o9_by_hand': ('L', 'pass', 'launch/turtle.launch starts nodes of turtlesim only, none of '
                                'hw3: the grader started its executables (letters.sh) instead'),
+    'o21_projects': ('L', 'pass', 'no launch file: the grader started its executables '
+                                  '(l_draw.py) as a launch file would'),
     'o10_turning': ('', 'fail', 'spin_forever.py, idle.py, keyboard.py not run alone: the '
                                 'alone runs had used the 50 s they share'),
     'o11_prefixed': ('L', 'pass', "error while attempting to run: terminator -x "
@@ -175,7 +206,7 @@ def graded(tmp_path_factory):
     _noahs_changed(cls)
     _others(cls)
     lenas = ('o1_', 'o3_', 'o4_', 'o5_', 'o7_', 'o8_', 'o9_', 'o11', 'o12', 'o13',
-             'o14', 'o15', 'o16', 'o20')  # not o2
+             'o14', 'o15', 'o16', 'o20', 'o21')  # not o2
     (top / 'roster.csv').write_text(
         'id,name,letter\n' + ''.join(f'{sid},Lena Ortiz,L\n' for sid in CONCLUSIONS
                                      if sid[:3] in lenas) +
@@ -267,14 +298,15 @@ def _others(cls):
     no_cmake = {name: text for name, text in BY_HAND.items() if name != 'CMakeLists.txt'}
     for folder, files in (('o9_by_hand/hw3', BY_HAND), ('o13_asks/asks', ASKS),
                           ('o15_no_cmake/hw3', no_cmake), ('o16_latched/hw3', LATCHED),
-                          ('o20_turns/turns', TURNS)):
+                          ('o20_turns/turns', TURNS), ('o21_projects', PROJECTS)):
         for name, text in files.items():
             path = os.path.join(cls, folder, name)
             os.makedirs(os.path.dirname(path), exist_ok=True)
             with open(path, 'w') as f:
                 f.write(text)
             os.chmod(path, 0o755 if name in ('scripts/asks.py', 'scripts/legs.sh',
-                                             'scripts/bars.sh') else 0o644)
+                                             'scripts/bars.sh', 'gazebo_chase/scripts/chase.py')
+                     else 0o644)
 
 
 def rows_of(out):
@@ -354,6 +386,9 @@ def test_what_was_left_out_is_said_in_the_students_log(graded):
     twice = open(os.path.join(out, 'o4_twice', 'log.txt')).read()
     assert 'left out lab1 (copy): a second package named lab1 (graded the one in lab1)' in twice
     assert os.path.exists(os.path.join(out, 'o2_M%FCller', 'results.json'))
+    projects = open(os.path.join(out, 'o21_projects', 'log.txt')).read()
+    assert 'left out gazebo_chase: gazebo_chase, which turtle_description neither depends on ' \
+        'nor launches' in projects
     siblings = open(os.path.join(out, 'o7_siblings', 'log.txt')).read()
     assert 'left out gazebo_world: gazebo_world, which lab1 neither depends on nor launches' \
         in siblings

@@ -23,15 +23,22 @@ def controller_processes(root, node):
     return [pid for pid, args in _commands() if wanted in args and _descends(pid, root)]
 
 
-def script_nodes(root, folder):
-    """pids of the processes under `root` that roslaunch started as nodes
-    and that are shell scripts in `folder` (bash, sh or dash running a file
-    there: not the grader's own stand-in for turtlesim, a script too)."""
+def script_nodes(root, folder, programs=False):
+    """{pid: its file's name} of the processes under `root` that roslaunch
+    started as nodes and that are shell scripts in `folder` (bash, sh or
+    dash running a file there: not the grader's own stand-in for turtlesim,
+    a script too); with `programs`, any node whose program or script is there."""
     inside = os.fsencode(os.path.join(folder, ''))
-    return [pid for pid, args in _commands()
-            if os.path.basename(args[0]).decode(errors='replace') in SHELLS
-            and len(args) > 1 and args[1].startswith(inside)
-            and any(arg.startswith(b'__name:=') for arg in args) and _descends(pid, root)]
+    found = {}
+    for pid, args in _commands():
+        if os.path.basename(args[0]).decode(errors='replace') in SHELLS:
+            ran = args[1:2]     # the script the shell runs
+        else:       # a program, or the script its interpreter runs
+            ran = args[:2] if programs else []
+        ran = [arg for arg in ran if arg.startswith(inside)]
+        if ran and any(arg.startswith(b'__name:=') for arg in args) and _descends(pid, root):
+            found[pid] = os.path.basename(os.fsdecode(ran[0]))
+    return found
 
 
 def reading_input(root):
@@ -94,12 +101,14 @@ def _descends(pid, root):
 
 class RunningScripts:
     """The submission's shell scripts (in `folder`) that a run's roslaunch
-    started as nodes, found once (the lab is up): whether one still runs,
+    started as nodes, found once (the lab is up), and with `programs` its
+    every node (those the grader started for want of a launch file, as a
+    TA runs them in a terminal and sees them end): whether one still runs,
     when one was last seen to, and which started an anonymous node (owner)."""
 
-    def __init__(self, root, folder):
-        self.pids = script_nodes(root, folder)
-        self.names = {pid: _script_name(pid) for pid in self.pids}     # each script's file name
+    def __init__(self, root, folder, programs=False):
+        self.names = script_nodes(root, folder, programs)     # pid: its script's file name
+        self.pids = list(self.names)
         self.until = None       # monotonic t one was last seen running; None: none was
         self.started = {}       # a pid inside the sandbox: the script whose process tree has it
 
@@ -126,15 +135,6 @@ class RunningScripts:
         /rostopic_PID_MS), as seen while it ran; else `node` itself."""
         found = ANONYMOUS.search(node)
         return self.started.get(int(found.group(1)), node) if found else node
-
-
-def _script_name(pid):
-    """The file name of the script shell `pid` runs ('' if it is gone)."""
-    try:
-        with open(f'/proc/{pid}/cmdline', 'rb') as f:
-            return os.path.basename(os.fsdecode(f.read().split(b'\0')[1]))
-    except (OSError, IndexError):
-        return ''
 
 
 def _descendants(pid):

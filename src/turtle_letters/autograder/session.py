@@ -526,7 +526,8 @@ def _watch(lab, limits, result):
     up = time.monotonic()
     result.launch = _launched(events, os.path.join(terminal.box.work, 'stand_in'), up - started,
                               seen.moved(record, started))
-    scripts = RunningScripts(terminal.process.pid, os.path.join(terminal.box.work, 'ws'))
+    scripts = RunningScripts(terminal.process.pid, os.path.join(terminal.box.work, 'ws'),
+                             programs=bool(result.executables))
     alive = _noting(scripts, alive)
     wait_until(lambda: False, limits.stand, alive)
     result.waited = _waited(record, started, limits.stand)

@@ -190,9 +190,9 @@ def _on_noetic(condition):
 
 
 def find(top) -> Package:
-    """The submission's package: of the package.xml under `top`, the one
-    whose launch file starts turtlesim and a controller, the shallowest
-    first; the other packages it needs are built beside it; those it does
+    """The submission's package: of the package.xml under `top`, the
+    likeliest (_likeliest: the one whose launch file starts turtlesim and a
+    controller, the shallowest first); the other packages it needs are built beside it; those it does
     not need, a second copy of a package, a package named turtlesim and a
     ROS 2 package (ros2_build) are left out and noted. Where no package
     names turtlesim and scripts beside them do, the scripts (_scripts_beside)."""
@@ -212,8 +212,7 @@ def find(top) -> Package:
     if beside:
         return beside._replace(notes=notes + beside.notes)
     packages = {n: f for f, n in reversed(ours) if n}     # the shallowest of a name
-    folder, name = min(ours, key=lambda fn: (lab_launch(fn[0], packages)[0],
-                                             fn[0].count(os.sep), fn[0]))
+    folder, name = min(ours, key=lambda fn: _likeliest(fn[0], packages))
     if not name:
         return Package('', folder, None, f'{os.path.join(folder, "package.xml")} names no package',
                        notes=notes)
@@ -221,6 +220,16 @@ def find(top) -> Package:
     wanted = needed(name, packages, launch and os.path.join(folder, launch))
     others = _built_beside(top, named, ros2, (folder, name), wanted, notes)
     return Package(name, folder, launch, '', others, notes)
+
+
+def _likeliest(folder, packages):
+    """How likely `folder`'s package is the lab, the likeliest least: one
+    whose launch file starts turtlesim (lab_launch's rank 0 or 1) or whose
+    files name it, before one that does neither (a real repository's Gazebo
+    package, its launch file of its own node, was run for the turtlesim
+    script beside it); then by its launch file's rank; the shallowest."""
+    rank = lab_launch(folder, packages)[0]
+    return rank > 1 and not _names_turtlesim(folder), rank, folder.count(os.sep), folder
 
 
 def _without_package_xml(top, notes):

@@ -2,6 +2,7 @@
 middle counted, however much it prints."""
 import os
 import pty
+import shutil
 import subprocess
 import sys
 import time
@@ -97,6 +98,36 @@ def test_a_shell_script_of_the_submission_is_seen_running_until_it_ends(tmp_path
         while scripts.running() and time.monotonic() < deadline:
             time.sleep(0.05)
         assert not scripts.running() and scripts.until >= seen
+    finally:
+        os.killpg(launch.pid, 9)
+        launch.wait()
+
+
+def test_where_the_grader_started_the_executables_each_is_seen_running_as_a_script_is(tmp_path):
+    """With `programs` (no launch file: a TA runs each in a terminal and
+    sees it end), a Python script run by its interpreter and a built
+    program of the workspace count as scripts do; without, neither does;
+    the grader's stand-in for turtlesim (outside it) never. A real class's
+    script paused 9 s between strokes: only its running kept it drawing."""
+    ws = tmp_path / 'ws'
+    (ws / 'src').mkdir(parents=True)
+    (ws / 'devel' / 'lib' / 'lab').mkdir(parents=True)
+    (ws / 'src' / 'draw.py').write_text('import time\ntime.sleep(60)\n')
+    shutil.copy('/bin/bash', ws / 'devel' / 'lib' / 'lab' / 'drawer')     # a program built there
+    (tmp_path / 'stand_in').mkdir()
+    (tmp_path / 'stand_in' / 'turtlesim_node').write_text('sleep 60\n')
+    launch = subprocess.Popen(
+        ['bash', '-c', f'{sys.executable} "$0"/ws/src/draw.py __name:=d & '
+                       '"$0"/ws/devel/lib/lab/drawer -c "sleep 60; :" __name:=c & '
+                       'sh "$0"/stand_in/turtlesim_node __name:=sim & wait', str(tmp_path)],
+        start_new_session=True)
+    try:
+        assert wait_until(lambda: all(controller_processes(launch.pid, node)
+                                      for node in ('d', 'c', 'sim')), 10.0)
+        assert RunningScripts(launch.pid, str(ws)).pids == []
+        every = RunningScripts(launch.pid, str(ws), programs=True)
+        assert sorted(every.names.values()) == ['draw.py', 'drawer']
+        assert every.running() and every.until is not None
     finally:
         os.killpg(launch.pid, 9)
         launch.wait()

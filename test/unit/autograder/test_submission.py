@@ -202,6 +202,24 @@ def test_of_several_packages_the_lab_and_those_it_needs_are_built(tmp_path):
     assert sorted(os.listdir(tmp_path / 'ws' / 'src')) == ['my_lab', 'other1', 'other2', 'other3']
 
 
+def test_of_several_packages_one_whose_code_names_turtlesim_is_the_lab(tmp_path):
+    """A real repository of a course's projects: a Gazebo package whose
+    launch file starts its own node, and the letter's package, with no
+    launch file, its script (mode 644) naming turtle1. The letter's is
+    graded; the Gazebo one was, its launch file ranked above none."""
+    node = '#!/usr/bin/env python\nimport rospy\nrospy.init_node("n")\n'
+    make(tmp_path, {'repo/pursuit/package.xml': PACKAGE.format('pursuit'),
+                    'repo/pursuit/launch/chase.launch':
+                        '<launch><node pkg="pursuit" type="chase.py" name="c"/></launch>',
+                    'repo/pursuit/scripts/chase.py': node + 'topic = "/tb3_1/cmd_vel"\n',
+                    'repo/nodes/package.xml': PACKAGE.format('turtle_description'),
+                    'repo/nodes/my_initials.py': node + 'topic = "/turtle1/cmd_vel"\n'})
+    package = find(str(tmp_path / 'repo'))
+    assert (package.name, package.launch, package.problem) == ('turtle_description', None, '')
+    assert package.notes == ['left out pursuit: pursuit, which turtle_description neither '
+                             'depends on nor launches (not built: its failures cost nothing)']
+
+
 def test_a_tree_too_deep_or_too_large_is_refused_in_words(tmp_path):
     make(tmp_path, {'lab/package.xml': PACKAGE.format('lab'), 'lab/launch/x.launch': LAB})
     nest(tmp_path / 'lab', 1100)        # deeper than Python's own walks can go
