@@ -356,6 +356,20 @@ def _teleported(facts):
             f'no letter is read from') if jumps else ''
 
 
+def _moved_inkless(drawing):
+    """': which turtles moved and laid no ink', or '': a real package turned
+    27 turtles spawned in the shape of a G, and 'nothing was drawn' stood
+    beside its 11,286 commands."""
+    if drawing is None or not drawing.turtles:
+        return ''
+    moved = drawing.turtles
+    who, its = (moved[0], 'its pen') if len(moved) == 1 else (f'{len(moved)} turtles',
+                                                               'their pens')
+    placed = (f', and {drawing.spawns} were spawned or killed: a letter is the ink turtles lay '
+              f'as they drive, not where turtles stand') if drawing.spawns > 1 else ''
+    return f': {who} moved and laid no ink (turned in place, or drove with {its} up){placed}'
+
+
 def _letter_read(facts, _):
     if facts.broken:
         return 0.0, f'{facts.broken}: nothing drawn is credited'
@@ -371,7 +385,8 @@ def _letter_read(facts, _):
         teleported = facts.drawing.jump_ink if facts.drawing else 0
         return 0.0, (f'no ink was driven: {teleported} teleport{"s" if teleported > 1 else ""} '
                      f'laid all there is' if teleported else 'nothing was drawn' +
-                (f': {facts.stuck or facts.waiting}' if facts.stuck or facts.waiting else ''))
+                (f': {facts.stuck or facts.waiting}' if facts.stuck or facts.waiting else
+                 _moved_inkless(facts.drawing)))
     if len(read) == 1 and read[0].letter is None:
         return 0.0, (f'no letter reads from the path (closest: {read[0].best.letter}, '
                      f'{100 * read[0].best.fit:.0f}% of its height off)') + _cut_short(facts)

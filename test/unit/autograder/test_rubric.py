@@ -268,6 +268,25 @@ def test_a_dash_alone_is_said_to_be_one_not_nothing_drawn():
     assert scores['Its accuracy'] == (0, f'not scored: {said}')
 
 
+def test_turtles_that_moved_and_laid_no_ink_are_said_to_not_only_nothing_drawn():
+    """A real package spawned 27 turtles in the shape of a G and turned them
+    in place: the row said 'nothing was drawn' beside 11,286 commands to
+    27 turtles. It says they moved and laid no ink; a turtle that never
+    moved is said as before."""
+    spawned = Drawing([], 1.0, 40.0, 11286, [], turtles=[f'turtle{i}' for i in range(1, 28)],
+                      spawns=28)
+    said = scores_of(grade(facts(spawned), load(DEFAULT)))['The letter drawn is the expected one']
+    assert said == (0, 'nothing was drawn: 27 turtles moved and laid no ink (turned in place, '
+                       'or drove with their pens up), and 28 were spawned or killed: a letter '
+                       'is the ink turtles lay as they drive, not where turtles stand'), said
+    turned = Drawing([], 1.0, 5.0, 3, [], turtles=['turtle1'])
+    said = scores_of(grade(facts(turned), load(DEFAULT)))['The letter drawn is the expected one']
+    assert said == (0, 'nothing was drawn: turtle1 moved and laid no ink (turned in place, or '
+                       'drove with its pen up)'), said
+    assert scores_of(grade(facts(Drawing([], None, None, 0, [])), load(DEFAULT)))[
+        'The letter drawn is the expected one'] == (0, 'nothing was drawn')
+
+
 def test_a_drawing_that_never_ends():
     lines = scores_of(grade(facts(Drawing([L_PATH], 1.0, None, 900, [])), load(DEFAULT)))
     assert lines['The drawing ends, the turtle standing still'][0] == 0
