@@ -191,11 +191,12 @@ def _on_noetic(condition):
 
 def find(top) -> Package:
     """The submission's package: of the package.xml under `top`, the
-    likeliest (_likeliest: the one whose launch file starts turtlesim and a
-    controller, the shallowest first); the other packages it needs are built beside it; those it does
-    not need, a second copy of a package, a package named turtlesim and a
-    ROS 2 package (ros2_build) are left out and noted. Where no package
-    names turtlesim and scripts beside them do, the scripts (_scripts_beside)."""
+    likeliest (_likeliest: the one whose launch file starts turtlesim and
+    a controller, the shallowest first); the other packages it needs are
+    built beside it; those it does not need, a second copy of a package, a
+    package named turtlesim and a ROS 2 package (ros2_build) are left out
+    and noted. Where no package names turtlesim and scripts beside them
+    do, the scripts (_scripts_beside)."""
     problem, special = survey(top)
     if problem:
         return Package('', '', None, problem)
