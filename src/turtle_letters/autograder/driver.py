@@ -5,7 +5,8 @@
     observe  observations.of_run  the drawing in what the grader's simulator recorded
     read     reading.page         the letters in its ink (a pen colour each, where as
                                   many; a frame or another line of writing left out
-                                  where only so they read): the strokes, then OCR
+                                  where only so they read): the strokes, then OCR,
+                                  then a longer row OCR read, read whole (_longer)
     alone    session.alone        executables started together that drew nothing of
                                   the letters, each run alone in a fresh world (a TA's try)
     score    rubric.grade         the points
@@ -25,7 +26,7 @@ from ..reading.ocr import read_text, told_apart
 from ..reading.page import Page, Writing, read_page
 from . import observations as seen
 from . import reports, rubric as rubrics, session, submission
-from .roster import Student
+from .roster import MAX_TEXT, Student
 
 
 # s within which a stop asked (Ctrl-C) is noted by the grader. Ctrl-C reaches its
@@ -127,19 +128,42 @@ def observed(expected, run, rubric):
 
 def read(drawing, expected):
     """(the letters read on the canvas, a reading.page.Page; OCR's reading
-    of the writing they were read in, or None): the strokes first
-    (page.read_page: a letter in each pen colour where there are as many,
-    else the row; a frame or another line of writing left out where only
-    so they read); OCR, the slower reader, is asked only where the strokes
-    do not read what was expected, or see another letter as plainly
-    (told_apart)."""
+    of the writing they were read in, or None; the longer row it reads
+    whole as, or ''): the strokes first (page.read_page: a letter in each
+    pen colour where there are as many, else the row; a frame or another
+    line of writing left out where only so they read); OCR, the slower
+    reader, is asked only where the strokes do not read what was expected,
+    or see another letter as plainly (told_apart); then, where the letters
+    are not credited, the row of more letters OCR read (_longer)."""
     if drawing is None or not drawing.strokes:
-        return Page([], Writing([], []), ''), None
+        return Page([], Writing([], []), ''), None, ''
+    page, ocr = _read_as(drawing, expected)
+    return page, ocr, _longer(drawing, expected, page, ocr)
+
+
+def _read_as(drawing, expected):
     page = read_page(drawing.strokes, drawing.looks, expected, drawing.homes)
     page = page._replace(readings=told_apart(page.writing.ink, page.readings))
     if rubrics.as_read(page.readings, expected).upper() == expected:    # a small l is an L
         return page, None
     return page, read_text(page.writing.ink, expected)
+
+
+def _longer(drawing, expected, page, ocr):
+    """OCR's text where it is more letters than `expected` (up to
+    MAX_TEXT), `expected` is not credited, and the ink, read again as if
+    a roster asked for that text, is credited it whole, as a row would be:
+    a student who drew a row where one letter was asked is told so, not
+    the letter nearest the row (a real class's LIT, where the roster asked
+    for L: `no letter reads (closest: I)`). '' where not so. The letters
+    asked for are never credited on it: a row drawn longer than expected
+    is not searched for them."""
+    if ocr is None or not len(expected) < len(ocr.text) <= MAX_TEXT or \
+            len(rubrics.credited(rubrics.Facts.of_drawing(expected, drawing, page, ocr))) == \
+            len(expected):
+        return ''
+    again = rubrics.Facts.of_drawing(ocr.text, drawing, *_read_as(drawing, ocr.text))
+    return ocr.text if len(rubrics.credited(again)) == len(ocr.text) else ''
 
 
 def reread(student_folder):
@@ -148,8 +172,8 @@ def reread(student_folder):
     again as read() reads it, no student code run. Only the ink is read
     again: the rest of the row (built, launched, ended) stands as graded."""
     expected, drawing = reports.read_ink(student_folder)
-    page, ocr = read(drawing, expected)
-    now = rubrics.letter_line(rubrics.Facts.of_drawing(expected, drawing, page, ocr))
+    now = rubrics.letter_line(rubrics.Facts.of_drawing(expected, drawing,
+                                                       *read(drawing, expected)))
     return reports.criterion_output(student_folder, rubrics.CRITERIA['letter'][0]), now
 
 

@@ -191,6 +191,7 @@ def caption(student_id, facts):
     """The picture's two lines: the letters expected, read and credited,
     and what each half shows (a letter of the overlay named only, said so)."""
     ocr = f'; {ocr_said(facts.ocr)}' if facts.ocr is not None else ''
+    ocr += f'; read as a row of {len(facts.longer)}, {facts.longer}' if facts.longer else ''
     named = ' (one OCR alone reads: named only)' if any(not s for _, s in overlay(facts)) else ''
     jumped = facts.drawing is not None and facts.drawing.teleported
     before = facts.drawing is not None and facts.drawing.earlier

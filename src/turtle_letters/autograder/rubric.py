@@ -88,6 +88,7 @@ class Facts(NamedTuple):
     where: str = ''                 # ... which of the canvas's writing that is, in words
     waiting: str = ''               # where a script stops at a rostopic pub that never exits
     fought: str = ''                # how the executables started together fought (session.Run)
+    longer: str = ''                # a row of more letters than expected it reads whole as
 
     @classmethod
     def never_ran(cls, expected, problem):
@@ -96,21 +97,22 @@ class Facts(NamedTuple):
         return cls(expected, problem)
 
     @classmethod
-    def observed(cls, expected, run, drawing, page, ocr):
+    def observed(cls, expected, run, drawing, page, ocr, longer=''):
         """A run's facts: its steps (session.Run), the drawing seen in it and
         the letters read from that drawing (a reading.page.Page)."""
-        return cls.of_drawing(expected, drawing, page, ocr)._replace(
+        return cls.of_drawing(expected, drawing, page, ocr, longer)._replace(
             build=run.build, launch=run.launch, waited=run.waited, talker=run.talker,
             stuck=run.stuck, limit=run.limit, own_triggers=own_triggers(run.events),
             chatter_peak=chatter_peak(run.events), broken=run.broken, limit_s=run.limit_s,
             waiting=run.waiting, fought=run.fought)
 
     @classmethod
-    def of_drawing(cls, expected, drawing, page, ocr):
+    def of_drawing(cls, expected, drawing, page, ocr, longer=''):
         """The facts of a drawing and the letters read from it alone (a
         drawing kept and read again: driver.reread)."""
         return cls(expected, drawing=drawing, readings=page.readings, ocr=ocr,
-                   writing=page.writing.ink if page.where else None, where=page.where)
+                   writing=page.writing.ink if page.where else None, where=page.where,
+                   longer=longer)
 
 
 class Mark(NamedTuple):
@@ -261,7 +263,10 @@ def by_ocr(facts):
 
 def drawn_text(facts):
     """The letters drawn, as the row gives them: the strokes' reading (a
-    small l as 'l', _small_l_at), or OCR's where it credits them."""
+    small l as 'l', _small_l_at), or OCR's where it credits them, or the
+    longer row the ink reads whole as (Facts.longer)."""
+    if facts.longer:
+        return facts.longer
     return facts.ocr.text if by_ocr(facts) else as_read(facts.readings, facts.expected)
 
 
@@ -388,8 +393,13 @@ def _letter_read(facts, _):
                 (f': {facts.stuck or facts.waiting}' if facts.stuck or facts.waiting else
                  _moved_inkless(facts.drawing)))
     if len(read) == 1 and read[0].letter is None:
-        return 0.0, (f'no letter reads from the path (closest: {read[0].best.letter}, '
-                     f'{100 * read[0].best.fit:.0f}% of its height off)') + _cut_short(facts)
+        closest = (f'closest: {read[0].best.letter}, {100 * read[0].best.fit:.0f}% of its '
+                   f'height off')
+        if facts.longer:
+            return 0.0, (f'drew {facts.longer} where one letter, {facts.expected}, is expected '
+                         f'({_longer_said(facts)}); read as one letter, none reads ({closest})' +
+                         _cut_short(facts))
+        return 0.0, f'no letter reads from the path ({closest})' + _cut_short(facts)
     text = as_read(facts.readings, facts.expected)
     if not facts.expected:
         return 0.0, (f'drew {text}, but no letter is expected: give it in the roster (its '
@@ -402,8 +412,21 @@ def _letter_read(facts, _):
     said_l += _cut_short(facts)
     if len(facts.expected) == 1:
         loose = nearest_only(facts)
-        return 0.0, (_nearest(loose, facts.expected) if loose else wrong) + said_l
-    return right / max(len(text), len(facts.expected)), f'{wrong}: {right} in place{said_l}'
+        return 0.0, (_nearest(loose, facts.expected) if loose else wrong) + said_l + \
+            _and_longer(facts)
+    return right / max(len(text), len(facts.expected)), \
+        f'{wrong}: {right} in place{said_l}{_and_longer(facts)}'
+
+
+def _longer_said(facts):
+    """Words for the longer row the ink reads whole as (Facts.longer)."""
+    return (f'read as a row of {len(facts.longer)}, it reads {facts.longer} whole: a roster '
+            f'that asks for {facts.longer} credits it, and a longer row is not searched for '
+            f'the letters asked')
+
+
+def _and_longer(facts):
+    return f'; {_longer_said(facts)}' if facts.longer else ''
 
 
 def nearest_only(facts):

@@ -19,8 +19,7 @@ OK = Step(True, 'fine')
 
 def graded(out, student_id, drawing, expected):
     """The student's folder in `out` as the grader writes it, and their letter line."""
-    page, ocr = driver.read(drawing, expected)
-    facts = rubrics.Facts.of_drawing(expected, drawing, page, ocr)._replace(
+    facts = rubrics.Facts.of_drawing(expected, drawing, *driver.read(drawing, expected))._replace(
         build=OK, launch=OK, waited=OK, talker=OK)
     grade = rubrics.grade(facts, RUBRIC)
     row = reports.Row(student_id, student_id, expected, rubrics.drawn_text(facts), grade, 1.0,

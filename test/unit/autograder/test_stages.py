@@ -147,6 +147,29 @@ def test_ocr_reads_only_a_row_the_strokes_do_not_read_as_expected_a_small_l_an_l
     assert driver.read(drawing, 'AT')[1] is not None
 
 
+def test_a_row_drawn_where_one_letter_is_asked_is_said_drawn_and_credits_nothing():
+    """A student who drew LIT where the roster asks for L (two real
+    classes' rows: a LIT, a MATT) is told what they drew, read as the row
+    it is, not which single letter lies nearest it; the L is not credited
+    (a longer row is not searched for the letter asked), and with a roster
+    of LIT the same ink earns it whole. A J and a P, which OCR reads WP,
+    read as WP by neither reader once asked: nothing is said drawn."""
+    from support.glyph_rows import row
+    lit = Drawing(row('LIT'), 1.0, 20.0, 300, [])
+    facts = rubrics.Facts.of_drawing('L', lit, *driver.read(lit, 'L'))
+    line = rubrics.letter_line(facts)
+    assert facts.longer == 'LIT' and rubrics.drawn_text(facts) == 'LIT', line
+    assert line.startswith('drew LIT where one letter, L, is expected (read as a row of 3, it '
+                           'reads LIT whole: a roster that asks for LIT credits it'), line
+    assert rubrics.credited(facts) == [] and '; read as one letter, none reads (closest' in line
+    asked = rubrics.Facts.of_drawing('LIT', lit, *driver.read(lit, 'LIT'))
+    assert [e for _, e in rubrics.credited(asked)] == list('LIT') and asked.longer == ''
+    jp = Drawing(row('JP'), 1.0, 20.0, 300, [])
+    facts = rubrics.Facts.of_drawing('J', jp, *driver.read(jp, 'J'))
+    assert facts.ocr.text == 'WP' and facts.longer == ''
+    assert rubrics.letter_line(facts).startswith('no letter reads from the path (closest')
+
+
 def test_letters_read_in_one_line_of_writing_are_graded_there_and_the_row_says_so():
     """The read and score stages: SNB above 002 inside a border (a real
     class's snb.py), in pens as the simulator recorded them. The letters
