@@ -185,8 +185,9 @@ def each_alone(expected, rubric, box, facts, run):
     the others drew (_not_kept). Not where one of them alone acted on the
     turtles: alone, it draws the same. The alone runs share one drawing's
     limit, each watched for what is left of it: a package whose nodes never
-    stop costs the class two limits, not one for each node."""
-    first, best = run, rubrics.grade(facts, rubric).score
+    stop costs the class two limits, not one for each node. The best is
+    the one of most points, then of most letters read (_ranked)."""
+    first, best = run, _ranked(facts, rubric)
     fought = len(first.executables) > 1 and not seen.one_driver(first.record)
     names = session.drivers_first(first, box)[:rubric.limits.alone] if fought else []
     left, tries = rubric.limits.drawing, []
@@ -199,11 +200,20 @@ def each_alone(expected, rubric, box, facts, run):
         tried = session.alone(first, name, rubric.limits._replace(drawing=left), box)
         left -= tried.watched_for()
         tried_facts = observed(expected, tried, rubric)
-        score = rubrics.grade(tried_facts, rubric).score
-        tries.append((name, rubrics.drawn_text(tried_facts), score, tried))
-        if score > best:
-            facts, run, best = tried_facts, tried, score
+        rank = _ranked(tried_facts, rubric)
+        tries.append((name, rubrics.drawn_text(tried_facts), rank[0], tried))
+        if rank > best:
+            facts, run, best = tried_facts, tried, rank
     return _not_kept(facts, run, tries, len(first.log))
+
+
+def _ranked(facts, rubric):
+    """A try's rank among each_alone's: its points, then the letters its
+    drawing reads as (rubric.drawn_text): of two tries of equal points, the
+    one whose ink a reader reads, as a TA keeps it (a real package's LIT,
+    drawn by one script alone where L was asked, beside its run together,
+    which OCR read LIV: 30 points each, and the row said what no letter reads)."""
+    return rubrics.grade(facts, rubric).score, sum(c.isalpha() for c in rubrics.drawn_text(facts))
 
 
 def _not_kept(facts, run, tries, shared):

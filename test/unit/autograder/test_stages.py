@@ -85,6 +85,32 @@ def test_executables_that_drew_nothing_together_run_each_alone_until_one_draws(
         assert json.load(f)['score'] == row.grade.score
 
 
+def test_of_tries_of_equal_points_the_one_whose_drawing_reads_is_kept(tmp_path, monkeypatch):
+    """Together, two scripts drew a scribble no letter reads; run.py alone
+    drew LIT where L is asked (niv's package, a real class's): each earns
+    the same points, and the row is run.py's, saying what it drew; the
+    scribble's run is tried first and said not kept."""
+    import math
+    monkeypatch.setattr(driver.submission, 'find', lambda folder: Package(
+        name="lab", folder=folder, launch=None, problem='', notes=[]))
+    monkeypatch.setattr(driver.session, 'run', lambda package, limits, box, letters: run_of(
+        'together', ['a.py', 'run.py']))
+    monkeypatch.setattr(driver.session, 'alone', lambda first, name, limits, box: run_of(name))
+    from support.glyph_rows import row
+    spiral = [[(3 + 0.02 * k * math.cos(0.2 * k), 3 + 0.02 * k * math.sin(0.2 * k))
+               for k in range(120)]]
+    scribble, lit = Drawing(spiral, 1.0, 5.0, 200, []), Drawing(row('LIT'), 1.0, 5.0, 200, [])
+    drawn = {'together': scribble, 'a.py': scribble, 'run.py': lit}
+    monkeypatch.setattr(driver, 'observed', observing(drawn))
+    place = Place()
+    place.box.work = str(tmp_path)
+    row_, facts = driver.grade(Student('s4', 'Niv', 'L', str(tmp_path)), RUBRIC,
+                               str(tmp_path / 'out'), place)
+    assert row_.drawn == 'LIT' and facts.launch.says.startswith(
+        'run.py launched; also tried, not kept: a.py alone drew ? ('), facts.launch.says
+    assert rubrics.letter_line(facts).startswith('drew LIT where one letter, L, is expected')
+
+
 def test_executables_of_which_one_alone_drove_are_not_run_alone(tmp_path, monkeypatch):
     """Together, controller.py drove an L (P expected) and talker.py only
     talked: alone, each would do the same, so the together run is the row."""
